@@ -1,0 +1,32 @@
+#pragma once
+// `radiant bench` prints tables. Each part of the system contributes its own table from its own
+// file; timings are medians over repeats, printed with their units.
+#include <string>
+#include <vector>
+
+namespace radiant::app {
+
+struct BenchOptions {
+    bool quick = false;  ///< fewer sizes and repeats: for CI smoke runs, not for quoting figures
+};
+
+struct BenchTable {
+    std::string title;
+    std::vector<std::string> columns;             ///< header cells, with units: "seconds (median)"
+    std::vector<std::vector<std::string>> rows;
+    std::vector<std::string> notes;               ///< lines printed under the table
+
+    void print() const;
+};
+
+/// Median of the samples (the samples are reordered).
+double median(std::vector<double> samples);
+/// "12.3" with a fixed number of significant digits.
+std::string formatNumber(double value, int significantDigits = 3);
+
+// One function per table; each lives in its own file under app/bench/.
+BenchTable benchScenes(const BenchOptions& options);       ///< loading and meshing
+BenchTable benchFormFactors(const BenchOptions& options);  ///< form factors and rays per second
+BenchTable benchSolvers(const BenchOptions& options);      ///< each method to residual 1e-3
+
+} // namespace radiant::app

@@ -1,0 +1,46 @@
+#include "app/cli/CommandLine.h"
+
+#include <CLI/CLI.hpp>
+#include <cstdio>
+#include <exception>
+#include <string>
+
+#include "app/LabApp.h"
+#include "radiometry/common/Error.h"
+
+namespace radiant::app {
+
+int runCommandLine(int argc, char** argv) {
+    CLI::App root{"Radiant: an interactive lab for radiometry and radiosity", "radiant"};
+    root.require_subcommand(0, 1);
+    std::string scene = "cornell-box";
+    root.add_option("scene", scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
+
+    const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addRenderCommand(root),
+                                   addBenchCommand(root)};
+    try {
+        root.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return root.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return root.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "radiant: %s (see radiant --help)\n", e.what());
+        return 2;
+    }
+    try {
+        for (const Subcommand& command : commands)
+            if (command.app->parsed()) return command.run();
+        LabOptions options;
+        options.scene = scene;
+        return runLab(options);
+    } catch (const RadiantError& e) {
+        std::fprintf(stderr, "radiant: %s\n", e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "radiant: internal error: %s\n", e.what());
+        return 1;
+    }
+}
+
+} // namespace radiant::app

@@ -1,0 +1,43 @@
+#pragma once
+// Ray casting against the scene's faces through Embree's BVH: visibility for form factors and the
+// probe, and picking in the window. Built once per scene; thread-safe for concurrent queries.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include <glm/vec3.hpp>
+
+#include "radiometry/scene/Scene.h"
+
+namespace radiant {
+
+struct RayHit {
+    double distance = 0;       ///< metres along the (unit) direction
+    glm::dvec3 point{0.0};
+    glm::dvec3 normal{0, 0, 1};  ///< the face's geometric normal (its front side)
+    std::uint32_t surface = 0;
+    std::uint32_t face = 0;    ///< within the surface
+};
+
+class RayCaster {
+public:
+    explicit RayCaster(const Scene& scene);
+    ~RayCaster();
+    RayCaster(const RayCaster&) = delete;
+    RayCaster& operator=(const RayCaster&) = delete;
+    RayCaster(RayCaster&&) noexcept;
+    RayCaster& operator=(RayCaster&&) noexcept;
+
+    /// Nearest hit along origin + t * direction for t in (0, maxDistance]. direction need not be unit.
+    [[nodiscard]] std::optional<RayHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                  double maxDistance = 1e30) const;
+    /// True when something blocks the open segment between a and b. The end points lie on surfaces;
+    /// the segment is shortened by a relative epsilon at both ends so neither end's own face counts.
+    [[nodiscard]] bool occluded(const glm::dvec3& a, const glm::dvec3& b) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
+
+} // namespace radiant

@@ -1,0 +1,56 @@
+#pragma once
+// The scene as the solvers see it: named surfaces made of planar convex polygons, each surface with
+// one diffuse material in SI units (metres, W/m^2). Built by the glTF loader or in code.
+#include <glm/vec3.hpp>
+#include <string>
+#include <vector>
+
+#include "radiometry/units/Quantity.h"
+
+namespace radiant {
+
+/// A diffuse material: reflectance per band in [0, 1) and radiant exitance per band in W/m^2.
+struct Material {
+    std::string name;
+    Rgb reflectance{0.0};   ///< dimensionless, each band in [0, 1)
+    ExitanceRgb exitance{}; ///< W/m^2 emitted, each band >= 0
+
+    [[nodiscard]] bool emits() const {
+        const Rgb& e = exitance.value();
+        return e.x > 0 || e.y > 0 || e.z > 0;
+    }
+};
+
+/// A planar convex polygon, vertices counter-clockwise seen from the side its normal points to.
+struct Face {
+    std::vector<glm::dvec3> vertices;  ///< metres
+    glm::dvec3 normal{0, 0, 1};        ///< unit, the emitting/reflecting side
+    double area = 0;                   ///< m^2
+
+    /// Recomputes normal and area from the vertices (Newell's method).
+    void updateGeometry();
+};
+
+/// A named group of faces sharing one material: what the Materials panel edits ("left wall").
+struct Surface {
+    std::string name;
+    std::size_t material = 0;  ///< index into Scene::materials
+    std::vector<Face> faces;
+    std::string origin;        ///< where it came from, for messages: "mesh 3, primitive 0"
+
+    [[nodiscard]] double area() const;
+};
+
+struct Scene {
+    std::string name;  ///< built-in name or file path
+    std::vector<Material> materials;
+    std::vector<Surface> surfaces;
+
+    [[nodiscard]] double totalArea() const;
+    [[nodiscard]] std::size_t faceCount() const;
+    /// Index of the surface with this name, or npos.
+    [[nodiscard]] std::size_t findSurface(const std::string& surfaceName) const;
+    static constexpr std::size_t npos = static_cast<std::size_t>(-1);
+};
+
+} // namespace radiant

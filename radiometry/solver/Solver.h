@@ -1,0 +1,74 @@
+#pragma once
+// One interface for the five radiosity methods a course teaches. Each step() is one visible
+// iteration, so a class can watch light spread and compare methods on the same scene.
+//
+//   B_i = E_i + rho_i * sum_j F_ij B_j      (per band; F_ij from patch i to patch j)
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "radiometry/common/Progress.h"
+#include "radiometry/formfactor/FormFactor.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/Scene.h"
+#include "radiometry/units/Quantity.h"
+
+namespace radiant {
+
+enum class SolverMethod { Jacobi, GaussSeidel, Progressive, Hierarchical, Importance };
+
+/// "jacobi", "gauss-seidel", "progressive", "hierarchical", "importance".
+std::string_view methodName(SolverMethod method);
+/// Parses a method name; throws RadiantError naming the value and the accepted names.
+SolverMethod parseMethod(std::string_view name);
+
+struct IterationStats {
+    std::size_t iteration = 0;      ///< 1 after the first step
+    double residual = 1;            ///< max over bands of sum_i A_i |B_i - E_i - rho_i sum_j F_ij B_j| / sum_i A_i E_i
+    PowerRgb unshotPower{};         ///< shooting methods: power not yet distributed (W); zero otherwise
+    std::int64_t shooter = -1;      ///< progressive: the patch shot in this step
+    std::size_t linksRefined = 0;   ///< hierarchical/importance: links created by refinement this step
+    std::size_t links = 0;          ///< hierarchical/importance: links in total
+    double seconds = 0;             ///< wall time of this step
+};
+
+struct SolverOptions {
+    FormFactorOptions formFactors{};
+    double matrixThreshold = 1e-7;     ///< gathering: form factors below this are dropped (mass reported)
+    double linkEpsilon = 1e-4;         ///< hierarchical: BF refinement threshold, W/m^2 x m^2 scale-free
+    double minElementArea = 1e-5;      ///< hierarchical: m^2, elements are not split below this
+    std::uint64_t seed = 1;
+    /// Importance: the camera whose view drives refinement (position, target, up, vertical fov in radians).
+    glm::dvec3 eye{0.278, 0.273, -0.8}, target{0.278, 0.273, 0.0}, up{0, 1, 0};
+    double verticalFov = 0.6911;       ///< 2 atan(12.5 / 35): the Cornell camera
+};
+
+class Solver {
+public:
+    virtual ~Solver() = default;
+    Solver() = default;
+    Solver(const Solver&) = delete;
+    Solver& operator=(const Solver&) = delete;
+
+    [[nodiscard]] virtual SolverMethod method() const = 0;
+    /// Advances one iteration (a sweep, one shot, or a refine-and-gather round).
+    virtual IterationStats step() = 0;
+    /// Per-patch radiosity (W/m^2, per band), indexed like the mesh's patches.
+    [[nodiscard]] virtual const std::vector<Rgb>& solution() const = 0;
+    /// Changes a surface's material; keeps every form factor and link; the solve resumes from the
+    /// current solution.
+    virtual void setMaterial(std::size_t surface, const Rgb& reflectance, const ExitanceRgb& exitance) = 0;
+    /// Starts over from B = E, keeping form factors.
+    virtual void reset() = 0;
+    /// Statistics of the last step (iteration 0 before the first).
+    [[nodiscard]] virtual const IterationStats& lastStats() const = 0;
+};
+
+/// Builds a solver for the meshed scene. Expensive set-up (form-factor matrix, initial linking)
+/// happens here, reporting to `progress` and honouring its cancellation.
+std::unique_ptr<Solver> makeSolver(SolverMethod method, const Scene& scene, const PatchMesh& mesh,
+                                   const SolverOptions& options = {}, Progress* progress = nullptr);
+
+} // namespace radiant
