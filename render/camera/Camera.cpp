@@ -1,0 +1,37 @@
+#include "render/camera/Camera.h"
+
+#include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace radiant::render {
+
+glm::dmat4 Camera::view() const { return glm::lookAt(eye, eye + forward, up); }
+
+Radians Camera::verticalFieldOfView(double aspect) const {
+    if (aspect >= 1.0) return fieldOfView;
+    return Radians(2.0 * std::atan(std::tan(fieldOfView.value() / 2.0) / aspect));
+}
+
+glm::dmat4 Camera::projection(double aspect) const {
+    return glm::perspective(verticalFieldOfView(aspect).value(), aspect, nearPlane, farPlane);
+}
+
+Camera cornellCamera() {
+    Camera camera;
+    camera.eye = {0.278, 0.273, -0.8};
+    camera.forward = {0, 0, 1};
+    camera.up = {0, 1, 0};
+    constexpr double focalLengthMm = 35.0, filmHeightMm = 25.0;
+    camera.fieldOfView = Radians(2.0 * std::atan(filmHeightMm / 2.0 / focalLengthMm));
+    return camera;
+}
+
+glm::dvec3 projectToPixel(const Camera& camera, const Viewport& viewport, const glm::dvec3& world) {
+    const glm::dvec4 clip = camera.viewProjection(viewport.aspect()) * glm::dvec4(world, 1.0);
+    const glm::dvec3 ndc = glm::dvec3(clip) / clip.w;
+    return {viewport.x + (ndc.x + 1.0) / 2.0 * viewport.width,
+            viewport.y + (1.0 - ndc.y) / 2.0 * viewport.height,
+            (ndc.z + 1.0) / 2.0};
+}
+
+} // namespace radiant::render

@@ -1,0 +1,116 @@
+#include "render/gl/ShaderProgram.h"
+
+#include <algorithm>
+#include <glm/gtc/type_ptr.hpp>
+#include <optional>
+#include <utility>
+#include <vector>
+
+#include "radiometry/common/Error.h"
+#include "render/EmbeddedShaders.h"
+
+namespace radiant::render::gl {
+namespace {
+
+std::string shaderLog(GLuint shader) {
+    GLint length = 0;
+    glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetShaderInfoLog(shader, length, nullptr, log.data());
+    return log.data();
+}
+
+std::string programLog(GLuint program) {
+    GLint length = 0;
+    glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::vector<char> log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    glGetProgramInfoLog(program, length, nullptr, log.data());
+    return log.data();
+}
+
+GLuint compile(GLenum stage, std::string_view fileName) {
+    const std::optional<std::string_view> source = embeddedShader(fileName);
+    if (!source)
+        throw RadiantError({"shaders/" + std::string(fileName), ""}, "no such shader was embedded in the binary");
+    const GLuint shader = glCreateShader(stage);
+    const char* text = source->data();
+    const auto length = static_cast<GLint>(source->size());
+    glShaderSource(shader, 1, &text, &length);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = shaderLog(shader);
+        glDeleteShader(shader);
+        throw RadiantError({"shaders/" + std::string(fileName), "compile"}, "GLSL compile failed:\n" + log);
+    }
+    return shader;
+}
+
+} // namespace
+
+ShaderProgram::ShaderProgram(std::string_view vertexFile, std::string_view fragmentFile)
+    : name_(std::string(vertexFile) + " + " + std::string(fragmentFile)) {
+    const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
+    GLuint fragment = 0;
+    try {
+        fragment = compile(GL_FRAGMENT_SHADER, fragmentFile);
+    } catch (...) {
+        glDeleteShader(vertex);
+        throw;
+    }
+    id_ = glCreateProgram();
+    glAttachShader(id_, vertex);
+    glAttachShader(id_, fragment);
+    glLinkProgram(id_);
+    // The program keeps the compiled stages alive; our names are no longer needed.
+    glDetachShader(id_, vertex);
+    glDetachShader(id_, fragment);
+    glDeleteShader(vertex);
+    glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    glGetProgramiv(id_, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = programLog(id_);
+        glDeleteProgram(id_);
+        id_ = 0;
+        throw RadiantError({"shaders/" + name_, "link"}, "GLSL link failed:\n" + log);
+    }
+}
+
+ShaderProgram::~ShaderProgram() {
+    if (id_ != 0) glDeleteProgram(id_);
+}
+
+ShaderProgram::ShaderProgram(ShaderProgram&& other) noexcept
+    : id_(std::exchange(other.id_, 0)), name_(std::move(other.name_)) {}
+
+ShaderProgram& ShaderProgram::operator=(ShaderProgram&& other) noexcept {
+    if (this != &other) {
+        if (id_ != 0) glDeleteProgram(id_);
+        id_ = std::exchange(other.id_, 0);
+        name_ = std::move(other.name_);
+    }
+    return *this;
+}
+
+void ShaderProgram::use() const { glUseProgram(id_); }
+
+GLint ShaderProgram::location(const char* uniform) const {
+    glUseProgram(id_);
+    return glGetUniformLocation(id_, uniform);
+}
+
+void ShaderProgram::set(const char* uniform, const glm::mat4& value) const {
+    glUniformMatrix4fv(location(uniform), 1, GL_FALSE, glm::value_ptr(value));
+}
+void ShaderProgram::set(const char* uniform, const glm::vec3& value) const {
+    glUniform3fv(location(uniform), 1, glm::value_ptr(value));
+}
+void ShaderProgram::set(const char* uniform, const glm::vec4& value) const {
+    glUniform4fv(location(uniform), 1, glm::value_ptr(value));
+}
+void ShaderProgram::set(const char* uniform, float value) const { glUniform1f(location(uniform), value); }
+void ShaderProgram::set(const char* uniform, int value) const { glUniform1i(location(uniform), value); }
+
+} // namespace radiant::render::gl

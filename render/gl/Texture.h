@@ -1,0 +1,28 @@
+#pragma once
+// Move-only owner of a 2D texture (render targets, later the false-colour legend's ramp).
+#include <epoxy/gl.h>
+
+namespace radiant::render::gl {
+
+class Texture2D {
+public:
+    /// Allocates width x height texels of `internalFormat` (GL_RGBA8, GL_RGBA16F, ...), linear filtering.
+    Texture2D(int width, int height, GLenum internalFormat);
+    ~Texture2D();
+    Texture2D(Texture2D&& other) noexcept;
+    Texture2D& operator=(Texture2D&& other) noexcept;
+    Texture2D(const Texture2D&) = delete;
+    Texture2D& operator=(const Texture2D&) = delete;
+
+    [[nodiscard]] GLuint id() const { return id_; }
+    [[nodiscard]] int width() const { return width_; }
+    [[nodiscard]] int height() const { return height_; }
+    void bind(GLuint unit) const;
+
+private:
+    GLuint id_ = 0;
+    int width_ = 0;
+    int height_ = 0;
+};
+
+} // namespace radiant::render::gl

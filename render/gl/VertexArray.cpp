@@ -1,0 +1,35 @@
+#include "render/gl/VertexArray.h"
+
+#include <utility>
+
+namespace radiant::render::gl {
+
+VertexArray::VertexArray() { glGenVertexArrays(1, &id_); }
+
+VertexArray::~VertexArray() {
+    if (id_ != 0) glDeleteVertexArrays(1, &id_);
+}
+
+VertexArray::VertexArray(VertexArray&& other) noexcept : id_(std::exchange(other.id_, 0)) {}
+
+VertexArray& VertexArray::operator=(VertexArray&& other) noexcept {
+    if (this != &other) {
+        if (id_ != 0) glDeleteVertexArrays(1, &id_);
+        id_ = std::exchange(other.id_, 0);
+    }
+    return *this;
+}
+
+void VertexArray::bind() const { glBindVertexArray(id_); }
+
+void VertexArray::addFloatAttribute(const Buffer& buffer, GLuint location, GLint components, std::size_t strideBytes,
+                                    std::size_t offsetBytes) {
+    glBindVertexArray(id_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    glEnableVertexAttribArray(location);
+    // GL takes the offset into the bound buffer disguised as a pointer.
+    glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(strideBytes),
+                          reinterpret_cast<const void*>(offsetBytes));  // NOLINT
+}
+
+} // namespace radiant::render::gl
