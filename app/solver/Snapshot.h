@@ -1,0 +1,40 @@
+#pragma once
+// What the solver thread publishes and the main thread draws: an immutable picture of the solve.
+// Shared through std::shared_ptr<const Snapshot>; nothing in it changes after publication, so the
+// reader needs no lock and may keep it as long as it likes.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/Scene.h"
+#include "radiometry/solver/Solver.h"
+
+namespace radiant::app {
+
+enum class SolverActivity {
+    Idle,          ///< nothing to do: paused, converged, or no scene
+    Meshing,       ///< cutting the scene into patches (progress available)
+    FormFactors,   ///< building the solver: form factors, links (progress available)
+    Solving,       ///< stepping
+};
+
+std::string_view activityName(SolverActivity activity);
+
+struct Snapshot {
+    std::uint64_t generation = 0;      ///< increases with every publication
+    std::uint64_t meshGeneration = 0;  ///< increases when the scene or its mesh changes
+    std::shared_ptr<const Scene> scene;     ///< materials as currently set
+    std::shared_ptr<const PatchMesh> mesh;  ///< patches the radiosity below is indexed by
+    std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
+    SolverMethod method = SolverMethod::GaussSeidel;
+    IterationStats stats;                   ///< of the last step
+    std::vector<IterationStats> history;    ///< every step since the last reset, for the plots
+    bool running = false;                   ///< stepping by itself until converged or paused
+    double tolerance = 1e-4;                ///< running stops when the residual falls below this
+    std::string error;                      ///< the last command's failure, empty when it succeeded
+    std::string notice;                     ///< the last warning worth showing (e.g. from loading)
+};
+
+} // namespace radiant::app

@@ -1,0 +1,254 @@
+#include "app/solver/SolverThread.h"
+
+#include <chrono>
+#include <optional>
+#include <type_traits>
+
+#include "radiometry/common/Error.h"
+
+namespace radiant::app {
+
+std::string_view activityName(SolverActivity activity) {
+    switch (activity) {
+    case SolverActivity::Idle: return "idle";
+    case SolverActivity::Meshing: return "meshing";
+    case SolverActivity::FormFactors: return "computing form factors";
+    case SolverActivity::Solving: return "solving";
+    }
+    return "?";
+}
+
+/// Everything the worker owns. Only the worker thread touches it.
+struct SolverThread::State {
+    std::shared_ptr<const Scene> scene;
+    MeshingOptions meshing;
+    std::shared_ptr<const PatchMesh> mesh;
+    std::unique_ptr<Solver> solver;
+    /// The scene and mesh the solver was built from, kept alive as long as it is: a solver may hold
+    /// references to them, while materials edits replace `scene`.
+    std::shared_ptr<const Scene> solverScene;
+    std::shared_ptr<const PatchMesh> solverMesh;
+    SolverMethod method = SolverMethod::GaussSeidel;
+    bool running = false;
+    std::size_t pendingSteps = 0;
+    double tolerance = 1e-4;
+    std::vector<IterationStats> history;
+    std::uint64_t generation = 0;
+    std::uint64_t meshGeneration = 0;
+    std::string error;
+    std::string notice;
+    std::chrono::steady_clock::time_point lastPublish{};
+};
+
+namespace {
+// A shooting solver may take thousands of steps a second; the display needs at most one
+// snapshot per frame, and each snapshot copies the radiosity and the history.
+constexpr auto kPublishInterval = std::chrono::milliseconds(12);
+
+std::vector<Rgb> emittedRadiosity(const Scene& scene, const PatchMesh& mesh) {
+    std::vector<Rgb> b(mesh.size());
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const Surface& surface = scene.surfaces[mesh.patches[i].surface];
+        b[i] = scene.materials[surface.material].exitance.value();
+    }
+    return b;
+}
+} // namespace
+
+SolverThread::SolverThread(SolverOptions options, SolverFactory factory)
+    : options_(std::move(options)), factory_(std::move(factory)) {
+    if (!factory_) {
+        factory_ = [](SolverMethod method, const Scene& scene, const PatchMesh& mesh, const SolverOptions& o,
+                      Progress* progress) { return makeSolver(method, scene, mesh, o, progress); };
+    }
+    published_.store(std::make_shared<const Snapshot>());
+    worker_ = std::jthread([this](std::stop_token stop) { workerLoop(stop); });
+}
+
+SolverThread::~SolverThread() {
+    progress_.cancelRequested.store(true);
+    worker_.request_stop();
+    queueChanged_.notify_all();
+    // jthread joins here.
+}
+
+bool SolverThread::cancelsLongWork(const SolverCommand& command) {
+    return std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::Remesh>(command) ||
+           std::holds_alternative<command::LoadScene>(command);
+}
+
+void SolverThread::send(SolverCommand command) {
+    const bool cancel = cancelsLongWork(command);
+    {
+        std::lock_guard lock(queueMutex_);
+        queue_.push_back(std::move(command));
+    }
+    // The worker clears the request when it starts new long work, so a stale request can at worst
+    // make one build start over.
+    if (cancel && activity() != SolverActivity::Idle && activity() != SolverActivity::Solving)
+        progress_.cancelRequested.store(true);
+    queueChanged_.notify_all();
+}
+
+std::shared_ptr<const Snapshot> SolverThread::snapshot() const { return published_.load(); }
+
+void SolverThread::waitUntilIdle() {
+    std::unique_lock lock(queueMutex_);
+    idle_.wait(lock, [&] { return queue_.empty() && !workerBusy_; });
+}
+
+void SolverThread::workerLoop(const std::stop_token& stop) {
+    State state;
+    while (!stop.stop_requested()) {
+        std::optional<SolverCommand> next;
+        {
+            std::unique_lock lock(queueMutex_);
+            const bool hasWork = state.running || state.pendingSteps > 0;
+            if (queue_.empty() && !hasWork) {
+                workerBusy_ = false;
+                activity_.store(SolverActivity::Idle);
+                idle_.notify_all();
+                queueChanged_.wait(lock, stop, [&] { return !queue_.empty(); });
+                if (stop.stop_requested()) break;
+            }
+            if (!queue_.empty()) {
+                next = std::move(queue_.front());
+                queue_.pop_front();
+            }
+            workerBusy_ = true;
+        }
+        try {
+            if (next) {
+                state.error.clear();
+                apply(state, *next);
+                publish(state);
+                continue;
+            }
+            ensureSolver(state);
+            if (!state.solver) {
+                state.running = false;
+                state.pendingSteps = 0;
+                publish(state);
+                continue;
+            }
+            activity_.store(SolverActivity::Solving);
+            const IterationStats stats = state.solver->step();
+            state.history.push_back(stats);
+            if (state.pendingSteps > 0) --state.pendingSteps;
+            if (state.running && stats.residual < state.tolerance) state.running = false;
+            const bool settled = !state.running && state.pendingSteps == 0;
+            if (settled || std::chrono::steady_clock::now() - state.lastPublish >= kPublishInterval) publish(state);
+        } catch (const Cancelled&) {
+            // A newer command made the work pointless; it is next in the queue.
+            state.solver.reset();
+            publish(state);
+        } catch (const std::exception& e) {
+            state.error = e.what();
+            state.running = false;
+            state.pendingSteps = 0;
+            publish(state);
+        }
+    }
+    std::lock_guard lock(queueMutex_);
+    workerBusy_ = false;
+    idle_.notify_all();
+}
+
+void SolverThread::apply(State& state, SolverCommand& command) {
+    std::visit(
+        [&](auto& c) {
+            using C = std::decay_t<decltype(c)>;
+            if constexpr (std::is_same_v<C, command::Run>) {
+                state.running = true;
+            } else if constexpr (std::is_same_v<C, command::Pause>) {
+                state.running = false;
+                state.pendingSteps = 0;
+            } else if constexpr (std::is_same_v<C, command::Step>) {
+                state.running = false;
+                state.pendingSteps += c.count;
+            } else if constexpr (std::is_same_v<C, command::Reset>) {
+                state.running = false;
+                state.pendingSteps = 0;
+                state.history.clear();
+                if (state.solver) state.solver->reset();
+            } else if constexpr (std::is_same_v<C, command::SetTolerance>) {
+                if (!(c.tolerance > 0)) throw RadiantError({"", "tolerance"}, "must be positive, got " + std::to_string(c.tolerance));
+                state.tolerance = c.tolerance;
+            } else if constexpr (std::is_same_v<C, command::SetMethod>) {
+                if (c.method != state.method || !state.solver) {
+                    state.method = c.method;
+                    state.solver.reset();
+                    state.history.clear();
+                    ensureSolver(state);
+                }
+            } else if constexpr (std::is_same_v<C, command::SetMaterial>) {
+                if (!state.scene || c.surface >= state.scene->surfaces.size())
+                    throw RadiantError({"", "set material"}, "no surface " + std::to_string(c.surface));
+                // Surfaces share materials in a file; editing one surface gives it a material of its own.
+                auto scene = std::make_shared<Scene>(*state.scene);
+                Surface& surface = scene->surfaces[c.surface];
+                Material edited = scene->materials[surface.material];
+                edited.name = surface.name;
+                edited.reflectance = c.reflectance;
+                edited.exitance = c.exitance;
+                surface.material = scene->materials.size();
+                scene->materials.push_back(edited);
+                state.scene = std::move(scene);
+                if (state.solver) state.solver->setMaterial(c.surface, c.reflectance, c.exitance);
+            } else if constexpr (std::is_same_v<C, command::Remesh> || std::is_same_v<C, command::LoadScene>) {
+                std::shared_ptr<const Scene> scene = state.scene;
+                if constexpr (std::is_same_v<C, command::LoadScene>) scene = c.scene;
+                if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
+                activity_.store(SolverActivity::Meshing);
+                progress_.cancelRequested.store(false);
+                auto mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
+                state.scene = std::move(scene);
+                state.mesh = std::move(mesh);
+                state.meshing = c.meshing;
+                ++state.meshGeneration;
+                state.solver.reset();
+                state.running = false;
+                state.pendingSteps = 0;
+                state.history.clear();
+                publish(state);  // show the new mesh (emission only) while form factors compute
+                ensureSolver(state);
+            }
+        },
+        command);
+}
+
+void SolverThread::ensureSolver(State& state) {
+    if (state.solver || !state.scene || !state.mesh) return;
+    activity_.store(SolverActivity::FormFactors);
+    progress_.cancelRequested.store(false);
+    progress_.done.store(0);
+    progress_.total.store(0);
+    state.solver.reset();
+    state.solverScene = state.scene;
+    state.solverMesh = state.mesh;
+    state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options_, &progress_);
+    activity_.store(SolverActivity::Idle);
+}
+
+void SolverThread::publish(State& state) {
+    auto s = std::make_shared<Snapshot>();
+    s->generation = ++state.generation;
+    s->meshGeneration = state.meshGeneration;
+    s->scene = state.scene;
+    s->mesh = state.mesh;
+    if (state.solver)
+        s->radiosity = state.solver->solution();
+    else if (state.scene && state.mesh)
+        s->radiosity = emittedRadiosity(*state.scene, *state.mesh);
+    s->method = state.method;
+    if (state.solver) s->stats = state.solver->lastStats();
+    s->history = state.history;
+    s->running = state.running || state.pendingSteps > 0;
+    s->tolerance = state.tolerance;
+    s->error = state.error;
+    s->notice = state.notice;
+    published_.store(std::shared_ptr<const Snapshot>(std::move(s)));
+    state.lastPublish = std::chrono::steady_clock::now();
+}
+
+} // namespace radiant::app

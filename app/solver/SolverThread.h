@@ -1,0 +1,65 @@
+#pragma once
+// The worker that owns the radiosity solver. The UI sends commands through a queue and reads the
+// newest immutable Snapshot each frame; neither side ever waits for the other's long work.
+// Meshing and solver construction (form factors, links) report progress and are cancelled when a
+// newer command makes them pointless (another scene, mesh or method).
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <functional>
+#include <memory>
+#include <mutex>
+#include <thread>
+
+#include "app/solver/SolverCommand.h"
+#include "app/solver/Snapshot.h"
+#include "radiometry/common/Progress.h"
+
+namespace radiant::app {
+
+using SolverFactory = std::function<std::unique_ptr<Solver>(SolverMethod, const Scene&, const PatchMesh&,
+                                                            const SolverOptions&, Progress*)>;
+
+class SolverThread {
+public:
+    /// `factory` builds solvers (makeSolver by default; tests inject their own).
+    explicit SolverThread(SolverOptions options = {}, SolverFactory factory = {});
+    ~SolverThread();
+    SolverThread(const SolverThread&) = delete;
+    SolverThread& operator=(const SolverThread&) = delete;
+
+    /// Queues a command; returns at once.
+    void send(SolverCommand command);
+    /// The newest published snapshot; never blocks on the worker's work.
+    [[nodiscard]] std::shared_ptr<const Snapshot> snapshot() const;
+    /// Progress of the current long work (meshing or form factors), for a progress bar.
+    [[nodiscard]] const Progress& progress() const { return progress_; }
+    [[nodiscard]] SolverActivity activity() const { return activity_.load(std::memory_order_relaxed); }
+    /// Blocks until every command sent so far has been applied and the worker is idle or only
+    /// running; for tests and the command line, never for the UI.
+    void waitUntilIdle();
+
+private:
+    struct State;
+    void workerLoop(const std::stop_token& stop);
+    void apply(State& state, SolverCommand& command);
+    void ensureSolver(State& state);
+    void publish(State& state);
+    [[nodiscard]] static bool cancelsLongWork(const SolverCommand& command);
+
+    SolverOptions options_;
+    SolverFactory factory_;
+    Progress progress_;
+    std::atomic<SolverActivity> activity_{SolverActivity::Idle};
+
+    mutable std::mutex queueMutex_;
+    std::condition_variable_any queueChanged_;
+    std::deque<SolverCommand> queue_;
+    bool workerBusy_ = false;  ///< guarded by queueMutex_: applying a command or stepping
+    std::condition_variable_any idle_;
+
+    std::atomic<std::shared_ptr<const Snapshot>> published_;
+    std::jthread worker_;  // last: started after everything it uses exists
+};
+
+} // namespace radiant::app

@@ -1,0 +1,165 @@
+#include <doctest/doctest.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <thread>
+
+#include "app/solver/SolverThread.h"
+#include "radiometry/common/Error.h"
+
+using namespace radiant;
+using namespace radiant::app;
+
+namespace {
+
+/// A solver whose iterates are known in closed form: every patch follows B_{k+1} = E + rho B_k
+/// from B_0 = E, so after k steps B = E (1 - rho^(k+1)) / (1 - rho) (a furnace).
+class FurnaceLikeSolver final : public Solver {
+public:
+    FurnaceLikeSolver(SolverMethod method, std::size_t patches, double rho, double e)
+        : method_(method), rho_(rho), e_(e), b_(patches, Rgb(e)) {}
+    [[nodiscard]] SolverMethod method() const override { return method_; }
+    IterationStats step() override {
+        for (Rgb& b : b_) b = Rgb(e_) + rho_ * b;
+        stats_.iteration += 1;
+        stats_.residual = std::pow(rho_, static_cast<double>(stats_.iteration + 1));
+        return stats_;
+    }
+    [[nodiscard]] const std::vector<Rgb>& solution() const override { return b_; }
+    void setMaterial(std::size_t, const Rgb& reflectance, const ExitanceRgb& exitance) override {
+        rho_ = reflectance.x;
+        e_ = exitance.value().x;
+    }
+    void reset() override {
+        stats_ = {};
+        for (Rgb& b : b_) b = Rgb(e_);
+    }
+    [[nodiscard]] const IterationStats& lastStats() const override { return stats_; }
+
+private:
+    SolverMethod method_;
+    double rho_, e_;
+    std::vector<Rgb> b_;
+    IterationStats stats_;
+};
+
+std::shared_ptr<const Scene> unitPlate() {
+    auto scene = std::make_shared<Scene>();
+    scene->name = "plate";
+    scene->materials.push_back({"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
+    Face face;
+    face.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    face.updateGeometry();
+    scene->surfaces.push_back({"plate", 0, {face}, "test"});
+    return scene;
+}
+
+SolverFactory furnaceFactory(double rho, double e) {
+    return [rho, e](SolverMethod method, const Scene&, const PatchMesh& mesh, const SolverOptions&, Progress*) {
+        return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), rho, e);
+    };
+}
+
+} // namespace
+
+TEST_SUITE("solver thread") {
+
+TEST_CASE("steps advance exactly as many iterations as asked, and the snapshot follows") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::Step{3});
+    thread.waitUntilIdle();
+    const auto snapshot = thread.snapshot();
+    REQUIRE(snapshot->mesh);
+    CHECK(snapshot->error.empty());
+    CHECK(snapshot->stats.iteration == 3);
+    CHECK(snapshot->history.size() == 3);
+    REQUIRE(snapshot->radiosity.size() == snapshot->mesh->size());
+    const double expected = (1 - std::pow(0.5, 4)) / (1 - 0.5);
+    CHECK(snapshot->radiosity.front().x == doctest::Approx(expected));
+    CHECK_FALSE(snapshot->running);
+}
+
+TEST_CASE("run stops by itself once the residual is under the tolerance") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetTolerance{1e-3});
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    const auto snapshot = thread.snapshot();
+    // residual 0.5^(k+1) < 1e-3 first at k = 9.
+    CHECK(snapshot->stats.iteration == 9);
+    CHECK(snapshot->stats.residual < 1e-3);
+    CHECK_FALSE(snapshot->running);
+}
+
+TEST_CASE("a material edit reaches the solver and the published scene, and reset starts over") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetMaterial{0, Rgb(0.25), ExitanceRgb(Rgb(2.0))});
+    thread.send(command::Reset{});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    const auto snapshot = thread.snapshot();
+    const Material& m = snapshot->scene->materials[snapshot->scene->surfaces[0].material];
+    CHECK(m.reflectance.x == doctest::Approx(0.25));
+    CHECK(m.exitance.value().x == doctest::Approx(2.0));
+    CHECK(snapshot->stats.iteration == 2);
+    CHECK(snapshot->radiosity.front().x == doctest::Approx(2.0 * (1 - std::pow(0.25, 3)) / 0.75));
+}
+
+TEST_CASE("a new method cancels a form-factor computation in progress") {
+    std::atomic<int> builds{0};
+    std::atomic<int> cancelled{0};
+    SolverFactory slow = [&](SolverMethod method, const Scene&, const PatchMesh& mesh, const SolverOptions&,
+                             Progress* progress) -> std::unique_ptr<Solver> {
+        ++builds;
+        if (method == SolverMethod::Jacobi) {
+            // Stands in for a long form-factor matrix: only cancellation ends it.
+            for (;;) {
+                try {
+                    progress->checkCancelled();
+                } catch (const Cancelled&) {
+                    ++cancelled;
+                    throw;
+                }
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+        }
+        return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), 0.5, 1.0);
+    };
+    SolverThread thread({}, slow);
+    thread.send(command::SetMethod{SolverMethod::Jacobi});
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    // Wait until the slow build is under way, then replace it.
+    for (int i = 0; i < 5000 && thread.activity() != SolverActivity::FormFactors; ++i)
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    REQUIRE(thread.activity() == SolverActivity::FormFactors);
+    thread.send(command::SetMethod{SolverMethod::GaussSeidel});
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    CHECK(cancelled.load() == 1);
+    const auto snapshot = thread.snapshot();
+    CHECK(snapshot->method == SolverMethod::GaussSeidel);
+    CHECK(snapshot->stats.iteration == 1);
+}
+
+TEST_CASE("generations only grow, and the reader never waits for a step") {
+    SolverThread thread({}, furnaceFactory(0.9, 1.0));
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetTolerance{1e-12});
+    thread.send(command::Run{});
+    std::uint64_t last = 0;
+    for (int i = 0; i < 2000; ++i) {
+        const auto s = thread.snapshot();
+        CHECK(s->generation >= last);
+        last = s->generation;
+        if (s->mesh) CHECK(s->radiosity.size() == s->mesh->size());
+    }
+    thread.send(command::Pause{});
+    thread.waitUntilIdle();
+    CHECK_FALSE(thread.snapshot()->running);
+}
+
+} // TEST_SUITE
