@@ -1,0 +1,322 @@
+// The gathering and shooting solvers against closed forms (oracles.md): the furnace, Jacobi's
+// iterates, two-patch exchange, energy balance. Meshes here are built by hand with form factors
+// from the published closed forms, so the solvers are tested independently of the kernel.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/common.hpp>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/solver/FormFactorMatrix.h"
+#include "radiometry/solver/GatheringSolver.h"
+#include "radiometry/solver/ProgressiveSolver.h"
+
+using namespace radiant;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+/// Directly opposed parallel rectangles a x b at distance c (Howell; oracles.md).
+double parallelRectangles(double a, double b, double c) {
+    const double x = a / c, y = b / c;
+    const double x2 = x * x, y2 = y * y;
+    return 2.0 / (pi * x * y) *
+           (std::log(std::sqrt((1 + x2) * (1 + y2) / (1 + x2 + y2))) + x * std::sqrt(1 + y2) * std::atan(x / std::sqrt(1 + y2)) +
+            y * std::sqrt(1 + x2) * std::atan(y / std::sqrt(1 + x2)) - x * std::atan(x) - y * std::atan(y));
+}
+
+/// Perpendicular rectangles w x l and h x l sharing the edge l: F from the w x l one (oracles.md).
+double perpendicularRectangles(double w, double h, double l) {
+    const double H = h / l, W = w / l;
+    const double H2 = H * H, W2 = W * W, sum = 1 + W2 + H2;
+    const double logTerm = std::log((1 + W2) * (1 + H2) / sum * std::pow(W2 * sum / ((1 + W2) * (W2 + H2)), W2) *
+                                    std::pow(H2 * sum / ((1 + H2) * (W2 + H2)), H2));
+    return 1.0 / (pi * W) *
+           (W * std::atan(1 / W) + H * std::atan(1 / H) - std::sqrt(H2 + W2) * std::atan(1 / std::sqrt(H2 + W2)) +
+            0.25 * logTerm);
+}
+
+/// A scene whose surfaces are single patches with given areas, one material per surface, and a
+/// dense form-factor matrix given by hand. The patches carry no geometry: the solvers see only
+/// areas, materials and form factors.
+struct HandBuilt {
+    Scene scene;
+    PatchMesh mesh;
+    std::vector<std::vector<double>> F;  ///< F[i][j], patch i to patch j
+
+    HandBuilt(const std::vector<double>& areas, std::vector<std::vector<double>> factors) : F(std::move(factors)) {
+        scene.name = "hand-built";
+        mesh.surfaceFirstPatch.push_back(0);
+        for (std::size_t i = 0; i < areas.size(); ++i) {
+            scene.materials.push_back({"m" + std::to_string(i), Rgb(0.0), ExitanceRgb{}});
+            scene.surfaces.push_back({"s" + std::to_string(i), i, {}, "test"});
+            Patch patch;
+            patch.surface = static_cast<std::uint32_t>(i);
+            patch.area = areas[i];
+            mesh.patches.push_back(patch);
+            mesh.surfaceFirstPatch.push_back(static_cast<std::uint32_t>(i + 1));
+        }
+    }
+    void material(std::size_t surface, Rgb reflectance, Rgb exitance) {
+        scene.materials[surface].reflectance = reflectance;
+        scene.materials[surface].exitance = ExitanceRgb(exitance);
+    }
+    [[nodiscard]] std::shared_ptr<const FormFactorMatrix> matrix() const {
+        std::vector<std::vector<FormFactorEntry>> rows(F.size());
+        for (std::size_t i = 0; i < F.size(); ++i)
+            for (std::size_t j = 0; j < F.size(); ++j)
+                if (F[i][j] != 0) rows[i].push_back({static_cast<std::uint32_t>(j), static_cast<float>(F[i][j])});
+        return std::make_shared<const FormFactorMatrix>(std::move(rows));
+    }
+    [[nodiscard]] ShotFormFactors shot() const {
+        return [factors = F](std::size_t shooter, std::span<double> toShooter) {
+            for (std::size_t j = 0; j < toShooter.size(); ++j) toShooter[j] = factors[j][shooter];
+        };
+    }
+    [[nodiscard]] std::unique_ptr<Solver> solver(SolverMethod method) const {
+        switch (method) {
+        case SolverMethod::Jacobi: return makeJacobiSolver(scene, mesh, matrix());
+        case SolverMethod::GaussSeidel: return makeGaussSeidelSolver(scene, mesh, matrix());
+        default: return makeProgressiveSolver(scene, mesh, shot());
+        }
+    }
+};
+
+/// A unit cube's six faces as patches: opposite faces (0,1), (2,3), (4,5).
+HandBuilt unitCube() {
+    const double opposite = parallelRectangles(1, 1, 1), adjacent = perpendicularRectangles(1, 1, 1);
+    std::vector<std::vector<double>> F(6, std::vector<double>(6, adjacent));
+    for (std::size_t i = 0; i < 6; ++i) {
+        F[i][i] = 0;
+        F[i][i ^ 1u] = opposite;
+    }
+    return HandBuilt(std::vector<double>(6, 1.0), F);
+}
+
+const SolverMethod kMethods[] = {SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive};
+
+void solveTo(Solver& solver, double residual, std::size_t maxSteps = 100000) {
+    for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
+    REQUIRE(solver.lastStats().residual <= residual);
+}
+
+/// The residual by its definition (Solver.h), from the dense matrix.
+double residualByDefinition(const HandBuilt& h, const std::vector<Rgb>& B) {
+    Rgb power(0.0), emitted(0.0);
+    for (std::size_t i = 0; i < B.size(); ++i) {
+        const Material& m = h.scene.materials[i];
+        Rgb gathered(0.0);
+        for (std::size_t j = 0; j < B.size(); ++j) gathered += h.F[i][j] * B[j];
+        power += h.mesh.patches[i].area * glm::abs(B[i] - m.exitance.value() - m.reflectance * gathered);
+        emitted += h.mesh.patches[i].area * m.exitance.value();
+    }
+    return std::max({power.x / emitted.x, power.y / emitted.y, power.z / emitted.z});
+}
+
+/// Largest |row sum - 1| of the matrix as the solver stores it (float entries).
+double rowSumDeviation(const FormFactorMatrix& matrix) {
+    double worst = 0;
+    for (std::size_t i = 0; i < matrix.size(); ++i) worst = std::max(worst, std::abs(matrix.rowSum(i) - 1.0));
+    return worst;
+}
+
+} // namespace
+
+TEST_SUITE("solvers") {
+
+TEST_CASE("the closed forms used as oracles reproduce their published values") {
+    CHECK(parallelRectangles(1, 1, 1) == doctest::Approx(0.199825).epsilon(1e-5));
+    CHECK(parallelRectangles(1, 1.5, 0.5) == doctest::Approx(0.4756).epsilon(1e-3));
+    CHECK(perpendicularRectangles(1, 1, 1) == doctest::Approx(0.200044).epsilon(1e-5));
+}
+
+TEST_CASE("every method converges to E/(1-rho) in the furnace") {
+    for (const double rho : {0.3, 0.7, 0.9}) {
+        HandBuilt cube = unitCube();
+        const Rgb exitance(2.0, 1.0, 0.5);
+        for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(rho), exitance);
+        const double deviation = rowSumDeviation(*cube.matrix());
+        REQUIRE(deviation < 1e-5);
+        for (const SolverMethod method : kMethods) {
+            CAPTURE(methodName(method));
+            CAPTURE(rho);
+            auto solver = cube.solver(method);
+            solveTo(*solver, 1e-10);
+            // With row sums 1 + d the fixed point is E / (1 - rho (1 + d)) at worst.
+            const double tolerance = rho * deviation / (1 - rho * (1 + deviation)) + 1e-8;
+            for (const Rgb& B : solver->solution())
+                for (int band = 0; band < 3; ++band)
+                    CHECK(B[band] == doctest::Approx(exitance[band] / (1 - rho)).epsilon(tolerance));
+        }
+    }
+}
+
+TEST_CASE("Jacobi's k-th furnace iterate is E (1 - rho^(k+1)) / (1 - rho)") {
+    for (const double rho : {0.5, 0.8}) {
+        HandBuilt cube = unitCube();
+        const double exitance = 3.0;
+        for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(rho), Rgb(exitance));
+        const auto matrix = cube.matrix();
+        const double d = rowSumDeviation(*matrix);
+        REQUIRE(d < 1e-5);
+        auto solver = makeJacobiSolver(cube.scene, cube.mesh, matrix);
+        for (std::size_t k = 1; k <= 30; ++k) {
+            solver->step();
+            REQUIRE(solver->lastStats().iteration == k);
+            // Bounce m sees (F^m 1) within (1 + d)^m - 1 of 1.
+            double tolerance = 1e-12;
+            for (std::size_t m = 1; m <= k; ++m)
+                tolerance += exitance * std::pow(rho, static_cast<double>(m)) * (std::pow(1 + d, static_cast<double>(m)) - 1);
+            const double expected = exitance * (1 - std::pow(rho, static_cast<double>(k + 1))) / (1 - rho);
+            for (const Rgb& B : solver->solution()) CHECK(std::abs(B.x - expected) <= tolerance);
+        }
+    }
+}
+
+TEST_CASE("two patches exchange light as the closed form says") {
+    struct Plates {
+        double a, b, c;
+    };
+    for (const Plates p : {Plates{1, 1, 1}, Plates{1, 1.5, 0.5}, Plates{2, 0.5, 0.3}}) {
+        const double F = parallelRectangles(p.a, p.b, p.c);  // F12 = F21: equal areas
+        HandBuilt plates({p.a * p.b, p.a * p.b}, {{0, F}, {F, 0}});
+        const Rgb rho1(0.8, 0.5, 0.2), rho2(0.6, 0.9, 0.4), e1(10, 5, 1), e2(0, 2, 7);
+        plates.material(0, rho1, e1);
+        plates.material(1, rho2, e2);
+        const Rgb denominator = Rgb(1.0) - rho1 * rho2 * F * F;
+        const Rgb b1 = (e1 + rho1 * F * e2) / denominator;
+        const Rgb b2 = (e2 + rho2 * F * e1) / denominator;
+        for (const SolverMethod method : kMethods) {
+            CAPTURE(methodName(method));
+            CAPTURE(p.c);
+            auto solver = plates.solver(method);
+            solveTo(*solver, 1e-12);
+            for (int band = 0; band < 3; ++band) {
+                // float storage of F limits agreement to about 1e-7 relative.
+                CHECK(solver->solution()[0][band] == doctest::Approx(b1[band]).epsilon(1e-6));
+                CHECK(solver->solution()[1][band] == doctest::Approx(b2[band]).epsilon(1e-6));
+            }
+        }
+    }
+}
+
+TEST_CASE("a closed box with uniform reflectance balances emitted and absorbed power") {
+    for (const double rho : {0.4, 0.85}) {
+        HandBuilt cube = unitCube();
+        for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(rho), Rgb(0.0));
+        cube.material(2, Rgb(rho), Rgb(5.0, 1.0, 0.0));  // one face emits, one band stays dark
+        const double deviation = rowSumDeviation(*cube.matrix());
+        for (const SolverMethod method : kMethods) {
+            CAPTURE(methodName(method));
+            auto solver = cube.solver(method);
+            solveTo(*solver, 1e-11);
+            Rgb absorbed(0.0);
+            for (const Rgb& B : solver->solution()) absorbed += (1 - rho) * B;  // unit areas
+            const double tolerance = rho * deviation / (1 - rho * (1 + deviation)) + 1e-9;
+            CHECK(absorbed.x == doctest::Approx(5.0).epsilon(tolerance));
+            CHECK(absorbed.y == doctest::Approx(1.0).epsilon(tolerance));
+            CHECK(absorbed.z == 0.0);
+        }
+    }
+}
+
+TEST_CASE("gathering residuals follow their definition; the shooting residual bounds it") {
+    HandBuilt cube = unitCube();
+    const Rgb rho[] = {{0.7, 0.6, 0.5}, {0.2, 0.8, 0.4}, {0.5, 0.5, 0.5}, {0.9, 0.1, 0.3}, {0.6, 0.6, 0.2}, {0.3, 0.3, 0.9}};
+    for (std::size_t s = 0; s < 6; ++s) cube.material(s, rho[s], s == 4 ? Rgb(4, 3, 2) : Rgb(0.0));
+    for (const SolverMethod method : kMethods) {
+        CAPTURE(methodName(method));
+        auto solver = cube.solver(method);
+        CHECK(solver->lastStats().iteration == 0);
+        for (int k = 0; k < 6; ++k) {
+            const IterationStats stats = solver->step();
+            const double defined = residualByDefinition(cube, solver->solution());
+            if (method == SolverMethod::Progressive)
+                CHECK(stats.residual >= defined * (1 - 1e-9));
+            else
+                CHECK(stats.residual == doctest::Approx(defined).epsilon(1e-6));
+        }
+    }
+}
+
+TEST_CASE("setMaterial resumes to the answer of a fresh solve with the new material") {
+    HandBuilt cube = unitCube();
+    for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(0.5, 0.6, 0.7), Rgb(0.0));
+    cube.material(0, Rgb(0.3), Rgb(8, 6, 4));
+    HandBuilt edited = cube;
+    edited.material(3, Rgb(0.9, 0.1, 0.4), Rgb(0, 1, 0));  // brighter and darker bands at once
+    edited.material(0, Rgb(0.3), Rgb(2, 6, 1));             // the light dims: negative unshot light
+    for (const SolverMethod method : kMethods) {
+        CAPTURE(methodName(method));
+        auto resumed = cube.solver(method);
+        solveTo(*resumed, 1e-3);
+        resumed->setMaterial(3, Rgb(0.9, 0.1, 0.4), ExitanceRgb(Rgb(0, 1, 0)));
+        resumed->setMaterial(0, Rgb(0.3), ExitanceRgb(Rgb(2, 6, 1)));
+        solveTo(*resumed, 1e-12);
+        auto fresh = edited.solver(method);
+        solveTo(*fresh, 1e-12);
+        for (std::size_t i = 0; i < 6; ++i)
+            for (int band = 0; band < 3; ++band)
+                CHECK(resumed->solution()[i][band] == doctest::Approx(fresh->solution()[i][band]).epsilon(1e-9));
+    }
+}
+
+TEST_CASE("setMaterial refuses reflectance outside [0, 1) and unknown surfaces") {
+    HandBuilt cube = unitCube();
+    cube.material(0, Rgb(0.5), Rgb(1.0));
+    for (const SolverMethod method : kMethods) {
+        auto solver = cube.solver(method);
+        CHECK_THROWS_AS(solver->setMaterial(1, Rgb(1.0, 0.5, 0.5), ExitanceRgb{}), RadiantError);
+        CHECK_THROWS_AS(solver->setMaterial(1, Rgb(0.5), ExitanceRgb(Rgb(-1, 0, 0))), RadiantError);
+        CHECK_THROWS_AS(solver->setMaterial(6, Rgb(0.5), ExitanceRgb{}), RadiantError);
+    }
+}
+
+TEST_CASE("reset returns to iteration 0 and B = E") {
+    HandBuilt cube = unitCube();
+    for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(0.6), Rgb(0.0));
+    cube.material(1, Rgb(0.6), Rgb(1, 2, 3));
+    for (const SolverMethod method : kMethods) {
+        CAPTURE(methodName(method));
+        auto solver = cube.solver(method);
+        const IterationStats initial = solver->lastStats();
+        for (int k = 0; k < 5; ++k) solver->step();
+        solver->reset();
+        CHECK(solver->lastStats().iteration == 0);
+        CHECK(solver->lastStats().residual == doctest::Approx(initial.residual));
+        for (std::size_t i = 0; i < 6; ++i) CHECK(solver->solution()[i] == cube.scene.materials[i].exitance.value());
+        // And it runs again the same way.
+        solver->step();
+        CHECK(solver->lastStats().iteration == 1);
+    }
+}
+
+TEST_CASE("progressive shoots the patch with the most unshot power and keeps the ambient estimate sensible") {
+    HandBuilt cube = unitCube();
+    for (std::size_t s = 0; s < 6; ++s) cube.material(s, Rgb(0.5), Rgb(0.0));
+    cube.material(2, Rgb(0.5), Rgb(1.0));
+    cube.material(5, Rgb(0.5), Rgb(3.0));
+    auto solver = makeProgressiveSolver(cube.scene, cube.mesh, cube.shot());
+    CHECK(solver->step().shooter == 5);
+    CHECK(solver->step().shooter == 2);
+    // The ambient term: unshot power over the area, reflected 1/(1 - rho) times, so that adding it
+    // to every patch puts the total power at the furnace's (sum A E) / (1 - rho) at once.
+    const std::vector<Rgb> shown = solver->solutionWithAmbient();
+    double shownPower = 0, unshotPower = 0;
+    for (std::size_t i = 0; i < 6; ++i) {
+        shownPower += shown[i].x;
+        unshotPower += solver->unshot()[i].x;
+    }
+    CHECK(solver->ambient().x == doctest::Approx(unshotPower / 6 / (1 - 0.5)));
+    CHECK(shownPower > 0);
+}
+
+} // TEST_SUITE
