@@ -1,0 +1,238 @@
+#include "radiometry/mesh/MeshPlan.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numeric>
+#include <string>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/mesh/VertexWelder.h"
+
+namespace radiant::detail {
+namespace {
+
+// No edge is cut into more segments than this; the patch count then exceeds any budget long before
+// an index could overflow.
+constexpr std::uint64_t kMaxSegments = std::uint64_t{1} << 24;
+
+/// Segments needed to cover `length` in steps of at most `step`, at least 1. The relative slack
+/// keeps 1.0000000000001 steps from becoming 2.
+std::uint64_t segmentsFor(double length, double step) {
+    const double n = std::ceil(length / step * (1.0 - 1e-12));
+    return static_cast<std::uint64_t>(std::clamp(n, 1.0, static_cast<double>(kMaxSegments)));
+}
+
+/// Welding tolerance: a billionth of the scene's size, so float-rounded copies of a corner merge
+/// and distinct corners never do.
+double weldTolerance(const Scene& scene) {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (const Surface& s : scene.surfaces)
+        for (const Face& f : s.faces)
+            for (const glm::dvec3& v : f.vertices) {
+                lo = glm::min(lo, v);
+                hi = glm::max(hi, v);
+            }
+    const double extent = lo.x <= hi.x ? glm::length(hi - lo) : 1.0;
+    return std::max(extent * 1e-9, 1e-12);
+}
+
+class EdgeClasses {
+public:
+    std::uint32_t add(std::uint64_t segments) {
+        parent_.push_back(static_cast<std::uint32_t>(parent_.size()));
+        segments_.push_back(segments);
+        return parent_.back();
+    }
+    std::uint32_t find(std::uint32_t e) {
+        while (parent_[e] != e) {
+            parent_[e] = parent_[parent_[e]];
+            e = parent_[e];
+        }
+        return e;
+    }
+    void unite(std::uint32_t a, std::uint32_t b) {
+        a = find(a);
+        b = find(b);
+        if (a == b) return;
+        parent_[b] = a;
+        segments_[a] = std::max(segments_[a], segments_[b]);
+    }
+    void require(std::uint32_t e, std::uint64_t segments) {
+        const std::uint32_t root = find(e);
+        segments_[root] = std::max(segments_[root], segments);
+    }
+    std::uint64_t segments(std::uint32_t e) { return segments_[find(e)]; }
+    std::size_t size() const { return parent_.size(); }
+
+private:
+    std::vector<std::uint32_t> parent_;
+    std::vector<std::uint64_t> segments_;
+};
+
+glm::dvec3 newellNormal(const std::vector<glm::dvec3>& corners, const Piece& piece) {
+    glm::dvec3 n(0.0);
+    for (std::size_t i = 0; i < piece.count; ++i)
+        n += glm::cross(corners[piece.corners[i]], corners[piece.corners[(i + 1) % piece.count]]);
+    return n;
+}
+
+/// Largest cell of a planar quad's nu x nv bilinear grid. On a planar quad the Jacobian
+/// n . (dP/du x dP/dv) is linear in (u, v) (the uv term is d x d = 0), so a cell's area is the
+/// Jacobian at its centre times du dv and the largest cell is one of the four corner cells.
+double largestQuadCell(const std::array<glm::dvec3, 4>& p, const glm::dvec3& unitNormal, std::uint64_t nu,
+                       std::uint64_t nv) {
+    const auto jacobian = [&](double u, double v) {
+        const glm::dvec3 du = (1 - v) * (p[1] - p[0]) + v * (p[2] - p[3]);
+        const glm::dvec3 dv = (1 - u) * (p[3] - p[0]) + u * (p[2] - p[1]);
+        return glm::dot(unitNormal, glm::cross(du, dv));
+    };
+    const double hu = 0.5 / static_cast<double>(nu), hv = 0.5 / static_cast<double>(nv);
+    const double largest = std::max({jacobian(hu, hv), jacobian(1 - hu, hv), jacobian(hu, 1 - hv), jacobian(1 - hu, 1 - hv)});
+    return largest / (static_cast<double>(nu) * static_cast<double>(nv));
+}
+
+std::string describe(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
+}
+
+SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double maxArea, double tolerance) {
+    const Surface& surface = scene.surfaces[surfaceIndex];
+    SurfacePlan plan;
+    VertexWelder welder(tolerance);
+    std::unordered_map<std::uint64_t, std::uint32_t> edgeIds;
+    EdgeClasses classes;
+
+    const auto edgeBetween = [&](std::uint32_t a, std::uint32_t b) {
+        const PlanEdge edge{std::min(a, b), std::max(a, b)};
+        const std::uint64_t key = (std::uint64_t{edge.low} << 32) | edge.high;
+        const auto [it, inserted] = edgeIds.try_emplace(key, static_cast<std::uint32_t>(plan.edges.size()));
+        if (inserted) {
+            plan.edges.push_back(edge);
+            classes.add(1);
+        }
+        return it->second;
+    };
+
+    for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+        const Face& face = surface.faces[f];
+        std::vector<std::uint32_t> ids;
+        for (const glm::dvec3& v : face.vertices) {
+            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+                throw RadiantError({scene.name, "surface '" + surface.name + "', face " + std::to_string(f)},
+                                   "vertex (" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) +
+                                       ") is not finite");
+            }
+            const std::uint32_t id = welder.weld(v);
+            if (ids.empty() || ids.back() != id) ids.push_back(id);
+        }
+        while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
+        if (ids.size() < 3 || !(face.area > 0)) continue;  // degenerate: nothing to light
+
+        // Fan into quads (0, i, i+1, i+2), then one closing triangle: convex pieces of a convex face.
+        const std::size_t n = ids.size();
+        std::size_t i = 1;
+        const auto addPiece = [&](std::uint8_t count) {
+            Piece piece;
+            piece.face = static_cast<std::uint32_t>(f);
+            piece.count = count;
+            for (std::size_t j = 0; j < count; ++j) piece.corners[j] = j == 0 ? ids[0] : ids[i + j - 1];
+            plan.pieces.push_back(piece);
+        };
+        for (; n - i >= 3; i += 2) addPiece(4);
+        if (n - i == 2) addPiece(3);
+    }
+    plan.corners = welder.takePoints();
+    // Collinear corners can leave a piece without area; it would only carry a NaN normal.
+    std::erase_if(plan.pieces, [&](const Piece& piece) { return !(glm::length(newellNormal(plan.corners, piece)) > 0); });
+
+    // Each piece asks for the fewest segments that keep its patches under maxArea and near square.
+    for (Piece& piece : plan.pieces) {
+        for (std::size_t e = 0; e < piece.count; ++e)
+            piece.edges[e] = edgeBetween(piece.corners[e], piece.corners[(e + 1) % piece.count]);
+        const double area = 0.5 * glm::length(newellNormal(plan.corners, piece));
+        if (piece.count == 3) {
+            // Uniform n-subdivision: n^2 triangles, each area / n^2 and similar to the piece.
+            const std::uint64_t n = segmentsFor(std::sqrt(area), std::sqrt(maxArea));
+            for (std::size_t e = 0; e < 3; ++e) classes.require(piece.edges[e], n);
+            classes.unite(piece.edges[0], piece.edges[1]);
+            classes.unite(piece.edges[0], piece.edges[2]);
+        } else {
+            // Cells of side s along both directions; for a parallelogram with angle theta the cell
+            // area is s^2 sin(theta), hence the scaling of s by lu lv / area = 1 / sin(theta).
+            const auto& c = plan.corners;
+            const auto& k = piece.corners;
+            const double lu = 0.5 * (glm::distance(c[k[0]], c[k[1]]) + glm::distance(c[k[2]], c[k[3]]));
+            const double lv = 0.5 * (glm::distance(c[k[1]], c[k[2]]) + glm::distance(c[k[3]], c[k[0]]));
+            const double side = std::sqrt(maxArea * lu * lv / area);
+            classes.require(piece.edges[0], segmentsFor(lu, side));
+            classes.require(piece.edges[1], segmentsFor(lv, side));
+            classes.unite(piece.edges[0], piece.edges[2]);
+            classes.unite(piece.edges[1], piece.edges[3]);
+        }
+    }
+
+    // A quad that is not a parallelogram has cells of unequal size: refine until its largest cell
+    // fits. Counts only grow, and growing one class never breaks another piece's bound.
+    for (bool changed = true; changed;) {
+        changed = false;
+        for (const Piece& piece : plan.pieces) {
+            if (piece.count != 4) continue;
+            std::array<glm::dvec3, 4> p{};
+            for (std::size_t j = 0; j < 4; ++j) p[j] = plan.corners[piece.corners[j]];
+            const glm::dvec3 normal = glm::normalize(newellNormal(plan.corners, piece));
+            const std::uint64_t nu = classes.segments(piece.edges[0]), nv = classes.segments(piece.edges[1]);
+            const double largest = largestQuadCell(p, normal, nu, nv);
+            if (largest <= maxArea * (1 + 1e-12)) continue;
+            if (nu >= kMaxSegments && nv >= kMaxSegments) continue;  // beyond any budget anyway
+            // Both directions grow by at least one segment, so the loop always progresses.
+            const double grow = std::sqrt(largest / maxArea);
+            const auto grown = [&](std::uint64_t segments) {
+                return std::max(segments + 1, segmentsFor(static_cast<double>(segments) * grow, 1.0));
+            };
+            classes.require(piece.edges[0], std::min(grown(nu), kMaxSegments));
+            classes.require(piece.edges[1], std::min(grown(nv), kMaxSegments));
+            changed = true;
+        }
+    }
+
+    plan.edgeClass.resize(plan.edges.size());
+    std::vector<std::uint32_t> classOfRoot(classes.size(), std::numeric_limits<std::uint32_t>::max());
+    for (std::uint32_t e = 0; e < plan.edges.size(); ++e) {
+        const std::uint32_t root = classes.find(e);
+        if (classOfRoot[root] == std::numeric_limits<std::uint32_t>::max()) {
+            classOfRoot[root] = static_cast<std::uint32_t>(plan.classSegments.size());
+            plan.classSegments.push_back(classes.segments(root));
+        }
+        plan.edgeClass[e] = classOfRoot[root];
+    }
+    return plan;
+}
+
+} // namespace
+
+MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
+    if (!(options.maxPatchArea > 0) || !std::isfinite(options.maxPatchArea)) {
+        throw RadiantError({scene.name, "max patch area"},
+                           "must be a positive number of m^2, not " + describe(options.maxPatchArea));
+    }
+    MeshPlan plan;
+    const double tolerance = weldTolerance(scene);
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        plan.surfaces.push_back(planSurface(scene, s, options.maxPatchArea, tolerance));
+        for (const Piece& piece : plan.surfaces.back().pieces) {
+            const auto& sp = plan.surfaces.back();
+            const auto nu = static_cast<double>(sp.segments(piece.edges[0]));
+            plan.patchCount += piece.count == 3 ? nu * nu : nu * static_cast<double>(sp.segments(piece.edges[1]));
+        }
+    }
+    return plan;
+}
+
+} // namespace radiant::detail
