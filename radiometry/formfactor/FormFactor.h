@@ -29,6 +29,9 @@ struct FormFactorOptions {
 double formFactor(const PatchPolygon& from, const PatchPolygon& to, const RayCaster* rays,
                   const FormFactorOptions& options = {});
 
+/// formFactor without visibility: the quadrature alone, to a relative `accuracy`.
+double unoccludedFormFactor(const PatchPolygon& from, const PatchPolygon& to, double accuracy = 1e-3);
+
 /// Fraction of the segments between `from` and `to` that are unblocked, from options.visibilityRays
 /// stratified sample pairs (1 when rays is null or visibilityRays is 0).
 double visibilityFraction(const PatchPolygon& from, const PatchPolygon& to, const RayCaster* rays,

@@ -1,0 +1,240 @@
+// Ray casting through Embree 3's BVH (Wald et al., "Embree: a kernel framework for efficient CPU
+// ray tracing", ACM TOG 2014). Faces are fan-triangulated into one triangle geometry; each triangle
+// remembers its (surface, face) and its face's plane in double precision.
+//
+// Embree works in float. Two guards keep a ray from reporting the surface it starts (or ends) on:
+// an intersection filter rejects triangles whose plane contains the ray's origin (or, for
+// segments, its end point) - tested in double against the face's own plane - and segments are
+// shortened at both ends by an epsilon relative to their length.
+#include "radiometry/geometry/RayCaster.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include <embree3/rtcore.h>
+#include <glm/geometric.hpp>
+
+#include "radiometry/common/Error.h"
+
+namespace radiant {
+namespace {
+
+struct TriangleInfo {
+    glm::dvec3 normal;    ///< unit, the face's front
+    double planeOffset;   ///< normal . p for every p on the face
+    std::uint32_t surface;
+    std::uint32_t face;
+};
+
+// Segments are shortened by this fraction of their length at each end.
+constexpr double kRelativeSegmentEpsilon = 1e-5;
+// Points within this many scene extents of a plane lie on it (double rounding of points generated
+// on a face, far below float's 6e-8).
+constexpr double kPlaneTolerance = 1e-9;
+
+struct TriangleTable {
+    std::vector<TriangleInfo> triangles;  ///< by Embree primID
+    glm::dvec3 origin{0.0};    ///< float coordinates are relative to the scene's centre, for precision
+    double extent = 1;         ///< bounding box diagonal, m
+    double planeTolerance = 0; ///< m
+};
+
+} // namespace
+
+struct RayCaster::Impl : TriangleTable {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+
+    Impl() = default;
+    Impl(const Impl&) = delete;
+    Impl& operator=(const Impl&) = delete;
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+namespace {
+
+/// RTCIntersectContext extended with the query's end points (Embree 3's documented way to pass
+/// per-query data to filter functions: the context is the first member).
+struct QueryContext {
+    RTCIntersectContext embree;
+    const TriangleTable* impl;
+    glm::dvec3 start;
+    glm::dvec3 end;
+    bool hasEnd;
+};
+
+void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
+    if (args->N != 1 || args->valid[0] == 0) return;
+    const auto* query = reinterpret_cast<const QueryContext*>(args->context);
+    const TriangleInfo& triangle = query->impl->triangles[RTCHitN_primID(args->hit, args->N, 0)];
+    const double tolerance = query->impl->planeTolerance;
+    const auto onPlane = [&](const glm::dvec3& p) {
+        return std::abs(glm::dot(triangle.normal, p) - triangle.planeOffset) <= tolerance;
+    };
+    if (onPlane(query->start) || (query->hasEnd && onPlane(query->end))) args->valid[0] = 0;
+}
+
+void throwOnDeviceError(RTCDevice device, const std::string& what) {
+    const RTCError error = rtcGetDeviceError(device);
+    if (error != RTC_ERROR_NONE)
+        throw RadiantError({"Embree", what}, "Embree error code " + std::to_string(static_cast<int>(error)));
+}
+
+QueryContext makeContext(const TriangleTable& impl, const glm::dvec3& start, const glm::dvec3& end, bool hasEnd) {
+    QueryContext context{};
+    rtcInitIntersectContext(&context.embree);
+    context.impl = &impl;
+    context.start = start;
+    context.end = end;
+    context.hasEnd = hasEnd;
+    return context;
+}
+
+void setRay(RTCRay& ray, const glm::dvec3& localOrigin, const glm::dvec3& unitDirection, double tnear, double tfar) {
+    ray.org_x = static_cast<float>(localOrigin.x);
+    ray.org_y = static_cast<float>(localOrigin.y);
+    ray.org_z = static_cast<float>(localOrigin.z);
+    ray.dir_x = static_cast<float>(unitDirection.x);
+    ray.dir_y = static_cast<float>(unitDirection.y);
+    ray.dir_z = static_cast<float>(unitDirection.z);
+    ray.tnear = static_cast<float>(tnear);
+    ray.tfar = static_cast<float>(std::min(tfar, static_cast<double>(std::numeric_limits<float>::max())));
+    ray.time = 0;
+    ray.mask = 0xFFFFFFFFu;
+    ray.id = 0;
+    ray.flags = 0;
+}
+
+} // namespace
+
+RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+    Impl& impl = *impl_;
+    impl.device = rtcNewDevice(nullptr);
+    if (!impl.device)
+        throw RadiantError({scene.name, "ray caster"}, "cannot create an Embree device (error code " +
+                                                           std::to_string(static_cast<int>(rtcGetDeviceError(nullptr))) + ")");
+
+    glm::dvec3 lower(std::numeric_limits<double>::max());
+    glm::dvec3 upper(std::numeric_limits<double>::lowest());
+    std::size_t vertexCount = 0;
+    std::size_t triangleCount = 0;
+    for (const Surface& surface : scene.surfaces)
+        for (const Face& face : surface.faces) {
+            if (face.vertices.size() < 3) continue;
+            vertexCount += face.vertices.size();
+            triangleCount += face.vertices.size() - 2;
+            for (const glm::dvec3& v : face.vertices) {
+                lower = glm::min(lower, v);
+                upper = glm::max(upper, v);
+            }
+        }
+    if (vertexCount > 0) {
+        impl.origin = 0.5 * (lower + upper);
+        impl.extent = std::max(glm::length(upper - lower), 1e-30);
+    }
+    impl.planeTolerance = kPlaneTolerance * impl.extent;
+
+    impl.scene = rtcNewScene(impl.device);
+    rtcSetSceneFlags(impl.scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(impl.scene, RTC_BUILD_QUALITY_HIGH);
+    if (triangleCount > 0) {
+        RTCGeometry geometry = rtcNewGeometry(impl.device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), vertexCount));
+        auto* indices = static_cast<std::uint32_t*>(rtcSetNewGeometryBuffer(
+            geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(std::uint32_t), triangleCount));
+        if (!vertices || !indices) {
+            rtcReleaseGeometry(geometry);
+            throwOnDeviceError(impl.device, "geometry buffers");
+        }
+        impl.triangles.reserve(triangleCount);
+        std::uint32_t nextVertex = 0;
+        std::size_t nextIndex = 0;
+        for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
+            const Surface& surface = scene.surfaces[s];
+            for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
+                const Face& face = surface.faces[f];
+                if (face.vertices.size() < 3) continue;
+                const std::uint32_t first = nextVertex;
+                for (const glm::dvec3& v : face.vertices) {
+                    const glm::dvec3 local = v - impl.origin;
+                    vertices[3 * nextVertex + 0] = static_cast<float>(local.x);
+                    vertices[3 * nextVertex + 1] = static_cast<float>(local.y);
+                    vertices[3 * nextVertex + 2] = static_cast<float>(local.z);
+                    ++nextVertex;
+                }
+                const TriangleInfo info{face.normal, glm::dot(face.normal, face.vertices[0]), s, f};
+                // Fan from the first corner: faces are convex.
+                for (std::uint32_t k = 1; k + 1 < face.vertices.size(); ++k) {
+                    indices[nextIndex++] = first;
+                    indices[nextIndex++] = first + k;
+                    indices[nextIndex++] = first + k + 1;
+                    impl.triangles.push_back(info);
+                }
+            }
+        }
+        rtcSetGeometryIntersectFilterFunction(geometry, rejectHitsOnEndPointPlanes);
+        rtcSetGeometryOccludedFilterFunction(geometry, rejectHitsOnEndPointPlanes);
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(impl.scene, geometry);
+        rtcReleaseGeometry(geometry);
+    }
+    rtcCommitScene(impl.scene);
+    throwOnDeviceError(impl.device, scene.name.empty() ? "building the BVH" : scene.name);
+}
+
+RayCaster::~RayCaster() = default;
+RayCaster::RayCaster(RayCaster&&) noexcept = default;
+RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
+
+std::optional<RayHit> RayCaster::intersect(const glm::dvec3& origin, const glm::dvec3& direction,
+                                           double maxDistance) const {
+    const double length = glm::length(direction);
+    if (!(length > 0) || !(maxDistance > 0)) return std::nullopt;
+    const glm::dvec3 unit = direction / length;
+    QueryContext context = makeContext(*impl_, origin, origin, false);
+    RTCRayHit rayHit{};
+    setRay(rayHit.ray, origin - impl_->origin, unit, 0.0, maxDistance);
+    rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.primID = RTC_INVALID_GEOMETRY_ID;
+    rayHit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(impl_->scene, &context.embree, &rayHit);
+    if (rayHit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+
+    const TriangleInfo& triangle = impl_->triangles[rayHit.hit.primID];
+    RayHit hit;
+    hit.normal = triangle.normal;
+    hit.surface = triangle.surface;
+    hit.face = triangle.face;
+    // Refine the float distance against the face's plane in double.
+    const double denominator = glm::dot(triangle.normal, unit);
+    double distance = static_cast<double>(rayHit.ray.tfar);
+    if (std::abs(denominator) > 1e-6) {
+        const double exact = (triangle.planeOffset - glm::dot(triangle.normal, origin)) / denominator;
+        if (exact > 0 && std::abs(exact - distance) <= 1e-4 * impl_->extent + 1e-4 * distance) distance = exact;
+    }
+    hit.distance = distance;
+    hit.point = origin + unit * distance;
+    return hit;
+}
+
+bool RayCaster::occluded(const glm::dvec3& a, const glm::dvec3& b) const {
+    const glm::dvec3 segment = b - a;
+    const double length = glm::length(segment);
+    if (!(length > 0)) return false;
+    const double epsilon = kRelativeSegmentEpsilon * length;
+    QueryContext context = makeContext(*impl_, a, b, true);
+    RTCRay ray{};
+    setRay(ray, a - impl_->origin, segment / length, epsilon, length - epsilon);
+    rtcOccluded1(impl_->scene, &context.embree, &ray);
+    // Embree marks an occluded ray by setting tfar to -infinity.
+    return ray.tfar < 0;
+}
+
+} // namespace radiant
