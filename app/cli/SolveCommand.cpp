@@ -1,15 +1,197 @@
+// `radiant solve SCENE`: mesh, build the solver, step to the tolerance, write JSON and CSV
+// (formats in docs/ARCHITECTURE: one summary per surface, one row per patch).
 #include <CLI/CLI.hpp>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <string>
+#include <thread>
+#include <unistd.h>
+
+#include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/Solver.h"
+#if __has_include("radiometry/scene/SceneLibrary.h")
+#include "radiometry/scene/SceneLibrary.h"
+#define RADIANT_HAS_SCENE_LIBRARY 1
+#endif
 
 namespace radiant::app {
 
-// PLACEHOLDER until its issue lands: refuses to run rather than print made-up numbers.
+namespace {
+
+struct SolveOptions {
+    std::string scene;
+    std::string method = "progressive";
+    double maxPatchArea = MeshingOptions{}.maxPatchArea;
+    double tolerance = 1e-3;
+    std::size_t maxIterations = 100000;
+    std::string json;
+    std::string csv;
+};
+
+Scene loadSceneByName(const std::string& nameOrPath) {
+#ifdef RADIANT_HAS_SCENE_LIBRARY
+    return loadScene(nameOrPath);
+#else
+    if (nameOrPath == "cornell-box") return makeCornellBox();
+    throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
+#endif
+}
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+/// A one-line bar on stderr while `progress` runs, when stderr is a terminal; silent otherwise.
+class ProgressLine {
+public:
+    ProgressLine(const Progress& progress, std::string label) {
+        if (!isatty(STDERR_FILENO)) return;
+        printer_ = std::jthread([&progress, label = std::move(label)](std::stop_token stop) {
+            while (!stop.stop_requested()) {
+                const double fraction = progress.fraction();
+                const int filled = static_cast<int>(fraction * 30);
+                std::fprintf(stderr, "\r%s [%s%s] %5.1f%%", label.c_str(), std::string(static_cast<std::size_t>(filled), '#').c_str(),
+                             std::string(static_cast<std::size_t>(30 - filled), ' ').c_str(), 100 * fraction);
+                std::fflush(stderr);
+                std::this_thread::sleep_for(std::chrono::milliseconds(100));
+            }
+            std::fprintf(stderr, "\r%s\r", std::string(label.size() + 42, ' ').c_str());
+        });
+    }
+
+private:
+    std::jthread printer_;
+};
+
+nlohmann::json rgbJson(const Rgb& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+std::string csvField(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string quoted = "\"";
+    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return quoted + "\"";
+}
+
+void writeText(const std::string& path, const std::string& text, const char* option) {
+    if (path == "-") {
+        std::cout << text << std::flush;
+        return;
+    }
+    std::ofstream out(path);
+    if (!out) throw RadiantError({path, option}, "cannot open for writing");
+    out << text;
+    if (!out) throw RadiantError({path, option}, "write failed");
+}
+
+void checkPositive(double value, const char* option) {
+    if (!(value > 0)) throw RadiantError({"", option}, "must be > 0, got " + std::to_string(value));
+}
+
+int runSolve(const SolveOptions& options) {
+    checkPositive(options.maxPatchArea, "--max-patch-area");
+    checkPositive(options.tolerance, "--tolerance");
+    const SolverMethod method = parseMethod(options.method);
+
+    const auto meshStart = std::chrono::steady_clock::now();
+    const Scene scene = loadSceneByName(options.scene);
+    MeshingOptions meshing;
+    meshing.maxPatchArea = options.maxPatchArea;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    const double meshSeconds = secondsSince(meshStart);
+
+    const auto formFactorStart = std::chrono::steady_clock::now();
+    Progress progress;
+    std::unique_ptr<Solver> solver;
+    {
+        const ProgressLine bar(progress, "form factors");
+        solver = makeSolver(method, scene, mesh, SolverOptions{}, &progress);
+    }
+    const double formFactorSeconds = secondsSince(formFactorStart);
+
+    const auto solveStart = std::chrono::steady_clock::now();
+    while (solver->lastStats().residual > options.tolerance && solver->lastStats().iteration < options.maxIterations)
+        solver->step();
+    const double solveSeconds = secondsSince(solveStart);
+    const IterationStats& stats = solver->lastStats();
+    if (stats.residual > options.tolerance)
+        std::fprintf(stderr, "radiant: warning: residual %.3g above the tolerance %.3g after %zu iterations\n",
+                     stats.residual, options.tolerance, stats.iteration);
+
+    const std::vector<Rgb>& B = solver->solution();
+    nlohmann::json surfaces = nlohmann::json::array();
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        const Material& material = scene.materials[scene.surfaces[s].material];
+        double area = 0;
+        Rgb power(0.0);
+        for (std::size_t i = mesh.surfaceFirstPatch[s]; i < mesh.surfaceFirstPatch[s + 1]; ++i) {
+            area += mesh.patches[i].area;
+            power += mesh.patches[i].area * B[i];
+        }
+        surfaces.push_back({{"name", scene.surfaces[s].name},
+                            {"area_m2", area},
+                            {"reflectance", rgbJson(material.reflectance)},
+                            {"exitance_W_m2", rgbJson(material.exitance.value())},
+                            {"radiosity_W_m2", rgbJson(area > 0 ? power / area : Rgb(0.0))},
+                            {"power_W", rgbJson(power)}});
+    }
+    const nlohmann::json report = {
+        {"scene", scene.name},
+        {"method", std::string(methodName(method))},
+        {"patches", mesh.size()},
+        {"iterations", stats.iteration},
+        {"residual", stats.residual},
+        {"seconds", {{"mesh", meshSeconds}, {"form_factors", formFactorSeconds}, {"solve", solveSeconds}}},
+        {"surfaces", surfaces}};
+
+    if (!options.json.empty()) writeText(options.json, report.dump(2) + "\n", "--json");
+    if (!options.csv.empty()) {
+        std::string csv = "patch,surface,area_m2,cx,cy,cz,nx,ny,nz,B_r,B_g,B_b\n";
+        char line[512];
+        for (std::size_t i = 0; i < mesh.size(); ++i) {
+            const Patch& p = mesh.patches[i];
+            std::snprintf(line, sizeof line, ",%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g,%.9g\n", p.area, p.centroid.x,
+                          p.centroid.y, p.centroid.z, p.normal.x, p.normal.y, p.normal.z, B[i].x, B[i].y, B[i].z);
+            csv += std::to_string(i) + "," + csvField(scene.surfaces[p.surface].name) + line;
+        }
+        writeText(options.csv, csv, "--csv");
+    }
+    if (options.json != "-" && options.csv != "-") {
+        std::printf("%s: %s, %zu patches, %zu iterations, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f\n",
+                    scene.name.c_str(), std::string(methodName(method)).c_str(), mesh.size(), stats.iteration,
+                    stats.residual, meshSeconds, formFactorSeconds, solveSeconds);
+        for (const auto& surface : surfaces) {
+            const auto& b = surface["radiosity_W_m2"];
+            std::printf("  %-16s B = (%.4g, %.4g, %.4g) W/m^2\n", surface["name"].get<std::string>().c_str(),
+                        b[0].get<double>(), b[1].get<double>(), b[2].get<double>());
+        }
+    }
+    return 0;
+}
+
+} // namespace
+
 Subcommand addSolveCommand(CLI::App& root) {
-    CLI::App* sub = root.add_subcommand("solve", "(not available yet)");
-    sub->allow_extras();
-    return {sub, [] () -> int { throw RadiantError({"", "solve"}, "not available in this build yet"); }};
+    auto options = std::make_shared<SolveOptions>();
+    CLI::App* sub = root.add_subcommand("solve", "Solve a scene's radiosity without a window; write JSON and CSV");
+    sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
+    sub->add_option("--method", options->method, "jacobi, gauss-seidel, progressive, hierarchical or importance")
+        ->capture_default_str();
+    sub->add_option("--max-patch-area", options->maxPatchArea, "Largest patch, m^2")->capture_default_str();
+    sub->add_option("--tolerance", options->tolerance, "Stop at this residual (fraction of emitted power)")
+        ->capture_default_str();
+    sub->add_option("--max-iterations", options->maxIterations, "Stop after this many steps")->capture_default_str();
+    sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
+    sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
+    return {sub, [options] { return runSolve(*options); }};
 }
 
 } // namespace radiant::app
