@@ -1,0 +1,52 @@
+#pragma once
+// Runs a loop over both cores (or however many there are): the hierarchical solver's refinement and
+// gathering are independent per link. Work is handed out in chunks from an atomic counter, because
+// links near the light cost many more rays than the rest.
+#include <algorithm>
+#include <atomic>
+#include <cstddef>
+#include <exception>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace radiant {
+
+/// Number of worker threads the hierarchical solvers use.
+inline unsigned hierarchicalThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }
+
+/// Calls body(begin, end, thread) over [0, count) in chunks; thread < threads. The first exception
+/// thrown by a body is rethrown on the calling thread once every worker has stopped.
+template <class Body>
+void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body&& body) {
+    if (count == 0) return;
+    if (threads <= 1 || count <= chunk) {
+        body(std::size_t{0}, count, 0u);
+        return;
+    }
+    std::atomic<std::size_t> next{0};
+    std::exception_ptr failure;
+    std::mutex failureMutex;
+    const auto work = [&](unsigned thread) {
+        try {
+            for (;;) {
+                const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
+                if (begin >= count) return;
+                body(begin, std::min(count, begin + chunk), thread);
+            }
+        } catch (...) {
+            const std::lock_guard lock(failureMutex);
+            if (!failure) failure = std::current_exception();
+            next.store(count, std::memory_order_relaxed);
+        }
+    };
+    {
+        std::vector<std::jthread> workers;
+        workers.reserve(threads - 1);
+        for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, t);
+        work(0);
+    }  // joins
+    if (failure) std::rethrow_exception(failure);
+}
+
+} // namespace radiant

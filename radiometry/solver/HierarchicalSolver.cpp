@@ -1,0 +1,344 @@
+// Hierarchical radiosity: P. Hanrahan, D. Salzman, L. Aupperle, "A rapid hierarchical radiosity
+// algorithm", SIGGRAPH 1991 (BF refinement, push-pull), with visibility estimated by a few rays per
+// link as in their paper's Section 5.
+#include "radiometry/solver/HierarchicalSolver.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/solver/HierarchicalFormFactor.h"
+#include "radiometry/solver/HierarchicalParallel.h"
+#include "radiometry/solver/SolverFactories.h"
+
+namespace radiant {
+
+namespace {
+
+double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
+
+std::uint64_t pairSeed(std::uint64_t seed, ElementIndex receiver, ElementIndex source) {
+    return hierarchical::mix(seed ^ ((static_cast<std::uint64_t>(receiver) << 32) | source));
+}
+
+} // namespace
+
+HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
+                                       Progress* progress)
+    : options_(options), tree_(scene), threads_(hierarchicalThreadCount()) {
+    if (!(options.minElementArea >= 0) || !(options.linkEpsilon >= 0))
+        throw RadiantError({scene.name, "hierarchical options"},
+                           "minElementArea and linkEpsilon must be >= 0 (got " + std::to_string(options.minElementArea) +
+                               " and " + std::to_string(options.linkEpsilon) + ")");
+    for (const Surface& surface : scene.surfaces) {
+        if (surface.material >= scene.materials.size())
+            throw RadiantError({scene.name, "surface '" + surface.name + "'"},
+                               "material index " + std::to_string(surface.material) + " out of range (" +
+                                   std::to_string(scene.materials.size()) + " materials)");
+        surfaceReflectance_.push_back(scene.materials[surface.material].reflectance);
+        surfaceExitance_.push_back(scene.materials[surface.material].exitance.value());
+    }
+    visibilityRays_ = std::min(options.formFactors.visibilityRays, kLinkVisibilityRays);
+    if (visibilityRays_ > 0) caster_ = std::make_unique<RayCaster>(scene);
+
+    patches_.reserve(mesh.patches.size());
+    for (const Patch& patch : mesh.patches) patches_.push_back({patch.surface, patch.face, patch.centroid, patch.area});
+    for (const PatchSample& patch : patches_)
+        if (patch.surface >= scene.surfaces.size() || patch.face >= scene.surfaces[patch.surface].faces.size())
+            throw RadiantError({scene.name, "patch mesh"}, "a patch names surface " + std::to_string(patch.surface) +
+                                                               ", face " + std::to_string(patch.face) +
+                                                               ", which the scene does not have");
+
+    splitsPerThread_.resize(threads_);
+    linksPerThread_.resize(threads_);
+    gatherPerThread_.resize(threads_);
+    linkRoots(progress);
+    setLeavesToEmission();
+    mapSolution();
+}
+
+HierarchicalSolver::~HierarchicalSolver() = default;
+
+void HierarchicalSolver::linkRoots(Progress* progress) {
+    const auto roots = tree_.roots();
+    if (progress) {
+        progress->total = roots.size();
+        progress->done = 0;
+    }
+    for (auto& buffer : linksPerThread_) buffer.clear();
+    parallelChunks(roots.size(), threads_, 1, [&](std::size_t begin, std::size_t end, unsigned thread) {
+        for (std::size_t i = begin; i < end; ++i) {
+            if (progress) progress->checkCancelled();
+            for (const ElementIndex source : roots)
+                if (source != roots[i]) makeLink(roots[i], source, linksPerThread_[thread]);
+            if (progress) progress->done.fetch_add(1, std::memory_order_relaxed);
+        }
+    });
+    for (auto& buffer : linksPerThread_) {
+        links_.insert(links_.end(), buffer.begin(), buffer.end());
+        visibilityTests_ += buffer.size();
+    }
+    // The same order whatever the thread timing: results do not depend on scheduling.
+    std::sort(links_.begin(), links_.end(), [](const Link& a, const Link& b) {
+        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+    });
+}
+
+void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out) const {
+    const PatchPolygon& p = tree_.polygon(receiver);
+    const PatchPolygon& q = tree_.polygon(source);
+    if (!hierarchical::facing(p, q)) return;
+    // The exact kernel at the receiver's centroid: exact over the source, a midpoint rule over the
+    // receiver whose error shrinks as refinement splits the receiver.
+    const double f = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q);
+    double bound = f;
+    if (f <= 0) {
+        // The centroid is behind the source's plane but part of the receiver is not: the link
+        // carries nothing yet, and refinement finds the part that does see the source.
+        for (const glm::dvec3& corner : p.corners())
+            bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
+                                                                           p.normal, q));
+        if (bound <= 0) return;
+    }
+    const double visible =
+        caster_ ? hierarchical::elementVisibility(p, q, *caster_, visibilityRays_,
+                                                  pairSeed(options_.seed, receiver, source))
+                : 1.0;
+    const bool partial = visible > 0 && visible < 1;
+    out.push_back({receiver, source, static_cast<float>(f * visible),
+                   static_cast<float>(bound * (partial ? 1.0 : kUniformVisibilityWeight))});
+}
+
+double HierarchicalSolver::emittedPower() const {
+    Rgb power(0.0);
+    for (const ElementIndex root : tree_.roots()) power += tree_.area(root) * surfaceExitance_[tree_.surface(root)];
+    return maxBand(power);
+}
+
+double HierarchicalSolver::meanReflectance(ElementIndex e) const {
+    const Rgb& rho = surfaceReflectance_[tree_.surface(e)];
+    return (rho.x + rho.y + rho.z) / 3.0;
+}
+
+double HierarchicalSolver::refinementThreshold() const { return options_.linkEpsilon * emittedPower(); }
+
+double HierarchicalSolver::linkError(const Link& link) const {
+    const double geometric = static_cast<double>(link.errorFormFactor) * tree_.area(link.receiver);
+    if (geometric <= 0) return 0;
+    const Rgb& rhoP = surfaceReflectance_[tree_.surface(link.receiver)];
+    const auto& radiosity = tree_.radiosity();
+    if (importance_.empty()) return geometric * maxBand(rhoP * radiosity[link.source]);
+    // Importance-driven (Smits, Arvo, Salesin 1992): the error of the radiosity this link brings to
+    // the receiver, weighted by the receiver's importance, plus the error of the importance it
+    // brings, weighted by the receiver's radiosity.
+    const Rgb weighted = rhoP * radiosity[link.source] * importance_[link.receiver] +
+                         meanReflectance(link.source) * importance_[link.source] * radiosity[link.receiver];
+    return geometric * maxBand(weighted);
+}
+
+bool HierarchicalSolver::canSplit(ElementIndex e) const {
+    // Splitting never makes an element smaller than minElementArea.
+    return tree_.area(e) * 0.25 >= options_.minElementArea;
+}
+
+std::size_t HierarchicalSolver::refine() {
+    const double threshold = refinementThreshold();
+    std::size_t created = 0;
+    std::size_t begin = 0;
+    std::vector<Split> splits;
+    for (;;) {
+        // 1. Which links are too coarse (in parallel; reads only).
+        for (auto& buffer : splitsPerThread_) buffer.clear();
+        parallelChunks(links_.size() - begin, threads_, 8192, [&](std::size_t from, std::size_t to, unsigned thread) {
+            for (std::size_t i = begin + from; i < begin + to; ++i) {
+                const Link& link = links_[i];
+                if (linkError(link) <= threshold) continue;
+                const bool receiverLarger = tree_.area(link.receiver) >= tree_.area(link.source);
+                const ElementIndex larger = receiverLarger ? link.receiver : link.source;
+                const ElementIndex smaller = receiverLarger ? link.source : link.receiver;
+                if (canSplit(larger))
+                    splitsPerThread_[thread].push_back({i, receiverLarger});
+                else if (canSplit(smaller))
+                    splitsPerThread_[thread].push_back({i, !receiverLarger});
+            }
+        });
+        splits.clear();
+        for (const auto& buffer : splitsPerThread_) splits.insert(splits.end(), buffer.begin(), buffer.end());
+        if (splits.empty()) break;
+        std::sort(splits.begin(), splits.end(), [](const Split& a, const Split& b) { return a.link < b.link; });
+
+        // 2. Split the elements (serially: the tree's arrays grow).
+        for (const Split& split : splits) {
+            const Link& link = links_[split.link];
+            const ElementIndex e = split.splitReceiver ? link.receiver : link.source;
+            if (tree_.isLeaf(e)) {
+                tree_.subdivide(e);
+                onSubdivided(e);
+            }
+        }
+
+        // 3. Replace each split link by its four children (in parallel: form factors and rays).
+        for (auto& buffer : linksPerThread_) buffer.clear();
+        parallelChunks(splits.size(), threads_, 64, [&](std::size_t from, std::size_t to, unsigned thread) {
+            for (std::size_t i = from; i < to; ++i) {
+                const Link& link = links_[splits[i].link];
+                if (splits[i].splitReceiver) {
+                    const ElementIndex first = tree_.firstChild(link.receiver);
+                    for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
+                        makeLink(c, link.source, linksPerThread_[thread]);
+                } else {
+                    const ElementIndex first = tree_.firstChild(link.source);
+                    for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
+                        makeLink(link.receiver, c, linksPerThread_[thread]);
+                }
+            }
+        });
+        for (const Split& split : splits) links_[split.link].receiver = kNoElement;
+        begin = links_.size();
+        for (const auto& buffer : linksPerThread_) {
+            links_.insert(links_.end(), buffer.begin(), buffer.end());
+            created += buffer.size();
+        }
+    }
+    if (created > 0 || !splits.empty())
+        std::erase_if(links_, [](const Link& link) { return link.receiver == kNoElement; });
+    visibilityTests_ += created;
+    return created;
+}
+
+void HierarchicalSolver::gather() {
+    const std::size_t n = tree_.size();
+    for (auto& buffer : gatherPerThread_) buffer.assign(n, Rgb(0.0));
+    const auto& radiosity = tree_.radiosity();
+    parallelChunks(links_.size(), threads_, 1 << 16, [&](std::size_t from, std::size_t to, unsigned thread) {
+        Rgb* gathered = gatherPerThread_[thread].data();
+        for (std::size_t i = from; i < to; ++i) {
+            const Link& link = links_[i];
+            gathered[link.receiver] += static_cast<double>(link.formFactor) * radiosity[link.source];
+        }
+    });
+    auto& own = tree_.gatheredIrradiance();
+    std::swap(own, gatherPerThread_[0]);  // the old array becomes next step's scratch space
+    for (std::size_t t = 1; t < gatherPerThread_.size(); ++t)
+        for (std::size_t e = 0; e < n; ++e) own[e] += gatherPerThread_[t][e];
+}
+
+double HierarchicalSolver::pushPull() {
+    const std::size_t n = tree_.size();
+    auto& radiosity = tree_.radiosity();
+    const auto& gathered = tree_.gatheredIrradiance();
+    pushedIrradiance_.resize(n);
+    Rgb change(0.0), emitted(0.0);
+    // Push: parents precede children, so one forward sweep hands every leaf its ancestors' irradiance.
+    for (ElementIndex e = 0; e < n; ++e) {
+        const ElementIndex parent = tree_.parent(e);
+        pushedIrradiance_[e] = gathered[e] + (parent == kNoElement ? Rgb(0.0) : pushedIrradiance_[parent]);
+        if (!tree_.isLeaf(e)) continue;
+        const std::uint32_t s = tree_.surface(e);
+        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * pushedIrradiance_[e];
+        change += tree_.area(e) * glm::abs(updated - radiosity[e]);
+        emitted += tree_.area(e) * surfaceExitance_[s];
+        radiosity[e] = updated;
+    }
+    // Pull: children follow parents, so a backward sweep averages finished children.
+    for (ElementIndex e = static_cast<ElementIndex>(n); e-- > 0;) {
+        if (tree_.isLeaf(e)) continue;
+        const ElementIndex first = tree_.firstChild(e);
+        Rgb sum(0.0);
+        for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) sum += tree_.area(c) * radiosity[c];
+        radiosity[e] = sum / tree_.area(e);
+    }
+    double residual = 0;
+    for (int band = 0; band < 3; ++band)
+        if (emitted[band] > 0) residual = std::max(residual, change[band] / emitted[band]);
+    return residual;
+}
+
+void HierarchicalSolver::setLeavesToEmission() {
+    auto& radiosity = tree_.radiosity();
+    for (ElementIndex e = 0; e < tree_.size(); ++e) radiosity[e] = surfaceExitance_[tree_.surface(e)];
+    std::fill(tree_.gatheredIrradiance().begin(), tree_.gatheredIrradiance().end(), Rgb(0.0));
+}
+
+void HierarchicalSolver::mapSolution() {
+    if (mappedTreeSize_ != tree_.size() || patchElement_.size() != patches_.size()) {
+        patchElement_.resize(patches_.size());
+        for (std::size_t i = 0; i < patches_.size(); ++i) {
+            const PatchSample& patch = patches_[i];
+            // The element about the patch's size holds the area-weighted mean of the leaves under it.
+            patchElement_[i] = tree_.locate(patch.surface, patch.face, patch.centroid, 0.5 * patch.area);
+        }
+        mappedTreeSize_ = tree_.size();
+    }
+    solution_.resize(patches_.size());
+    const auto& radiosity = tree_.radiosity();
+    for (std::size_t i = 0; i < patches_.size(); ++i) solution_[i] = radiosity[patchElement_[i]];
+    afterSolutionMapped();
+}
+
+IterationStats HierarchicalSolver::step() {
+    const auto start = std::chrono::steady_clock::now();
+    IterationStats stats;
+    stats.iteration = stats_.iteration + 1;
+    stats.linksRefined = refine();
+    gather();
+    stats.residual = pushPull();
+    afterGather();
+    mapSolution();
+    stats.links = links_.size();
+    stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats_ = stats;
+    return stats;
+}
+
+void HierarchicalSolver::setMaterial(std::size_t surface, const Rgb& reflectance, const ExitanceRgb& exitance) {
+    if (surface >= surfaceReflectance_.size())
+        throw RadiantError({"", "set material"}, "surface " + std::to_string(surface) + " out of range (" +
+                                                     std::to_string(surfaceReflectance_.size()) + " surfaces)");
+    for (int band = 0; band < 3; ++band) {
+        if (!(reflectance[band] >= 0 && reflectance[band] < 1))
+            throw RadiantError({"", "set material"}, "reflectance " + std::to_string(reflectance[band]) +
+                                                         " outside [0, 1) for surface " + std::to_string(surface));
+        if (!(exitance.value()[band] >= 0))
+            throw RadiantError({"", "set material"}, "exitance " + std::to_string(exitance.value()[band]) +
+                                                         " W/m^2 is negative for surface " + std::to_string(surface));
+    }
+    surfaceReflectance_[surface] = reflectance;
+    surfaceExitance_[surface] = exitance.value();
+}
+
+void HierarchicalSolver::reset() {
+    setLeavesToEmission();
+    stats_ = {};
+    mapSolution();
+}
+
+std::size_t HierarchicalSolver::bytes() const {
+    std::size_t perThread = 0;
+    for (const auto& b : splitsPerThread_) perThread += b.capacity() * sizeof(Split);
+    for (const auto& b : linksPerThread_) perThread += b.capacity() * sizeof(Link);
+    for (const auto& b : gatherPerThread_) perThread += b.capacity() * sizeof(Rgb);
+    return tree_.bytes() + links_.capacity() * sizeof(Link) + pushedIrradiance_.capacity() * sizeof(Rgb) +
+           importance_.capacity() * sizeof(double) + patchElement_.capacity() * sizeof(ElementIndex) +
+           patches_.capacity() * sizeof(PatchSample) + solution_.capacity() * sizeof(Rgb) + perThread;
+}
+
+std::size_t HierarchicalSolver::raysCast() const {
+    return visibilityTests_ * static_cast<std::size_t>(std::max(visibilityRays_, 0));
+}
+
+SolverOptions hierarchicalOptionsForElements(const Scene& scene, std::size_t elements, SolverOptions base) {
+    const double perElement = scene.totalArea() / static_cast<double>(std::max<std::size_t>(elements, 1));
+    base.minElementArea = 0.5 * perElement;
+    base.linkEpsilon = 1e-6;
+    return base;
+}
+
+std::unique_ptr<Solver> makeHierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
+                                               Progress* progress) {
+    return std::make_unique<HierarchicalSolver>(scene, mesh, options, progress);
+}
+
+} // namespace radiant

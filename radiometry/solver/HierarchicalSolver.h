@@ -1,0 +1,130 @@
+#pragma once
+// Hierarchical radiosity: P. Hanrahan, D. Salzman, L. Aupperle, "A rapid hierarchical radiosity
+// algorithm", SIGGRAPH 1991.
+//
+// Every face is the root of a quadtree of elements. Links join pairs of elements; a link is
+// refined (its larger element split, the link replaced by four finer ones) while its "BF" error
+// estimate rho_p B_q F_pq A_p exceeds linkEpsilon times the emitted power, until elements reach
+// minElementArea. The estimate counts a partially visible link (a few rays disagree) four times as
+// much as a fully visible or fully hidden one, so shadow boundaries get the finest elements.
+// One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
+// cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
+// pulled up as the area-weighted mean of the children.
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/ElementTree.h"
+#include "radiometry/solver/HierarchicalLink.h"
+#include "radiometry/solver/Solver.h"
+
+namespace radiant {
+
+class HierarchicalSolver : public Solver {
+public:
+    /// Builds the element tree (one root per face), the ray caster when visibility is asked for
+    /// (options.formFactors.visibilityRays > 0) and the initial links between every pair of roots
+    /// that face each other.
+    HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options, Progress* progress);
+    ~HierarchicalSolver() override;
+
+    [[nodiscard]] SolverMethod method() const override { return SolverMethod::Hierarchical; }
+    IterationStats step() override;
+    [[nodiscard]] const std::vector<Rgb>& solution() const override { return solution_; }
+    void setMaterial(std::size_t surface, const Rgb& reflectance, const ExitanceRgb& exitance) override;
+    void reset() override;
+    [[nodiscard]] const IterationStats& lastStats() const override { return stats_; }
+
+    /// The elements (the window draws the leaves) and the links between them.
+    [[nodiscard]] const ElementTree& elements() const { return tree_; }
+    [[nodiscard]] std::span<const Link> links() const { return links_; }
+    /// For each mesh patch, the element whose radiosity it shows (about the patch's size or the
+    /// deepest one under its centroid).
+    [[nodiscard]] std::span<const ElementIndex> patchElements() const { return patchElement_; }
+    /// Heap bytes held by elements, links and the solver's per-element arrays.
+    [[nodiscard]] std::size_t bytes() const;
+    /// Visibility rays cast by refinement so far.
+    [[nodiscard]] std::size_t raysCast() const;
+
+    /// Visibility rays per new link (stratified): few, because the oracle only needs to know
+    /// whether a link is fully visible, fully hidden or partial.
+    static constexpr int kLinkVisibilityRays = 4;
+    /// How much a link of uniform visibility counts in the oracle, relative to a partial one.
+    static constexpr double kUniformVisibilityWeight = 0.25;
+
+protected:
+    /// Called after `parent` was split (serially, between parallel phases).
+    virtual void onSubdivided(ElementIndex /*parent*/) {}
+    /// Called after the radiosity gather and push-pull of a step, before the solution is mapped.
+    virtual void afterGather() {}
+    /// Called after the per-patch solution was refreshed.
+    virtual void afterSolutionMapped() {}
+    /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
+    [[nodiscard]] virtual double refinementThreshold() const;
+
+    /// Per-element importance (1/m^2), empty for plain hierarchical radiosity; when present the
+    /// oracle weighs each link's error by it (importance-driven refinement, Smits et al. 1992).
+    std::vector<double> importance_;
+
+    [[nodiscard]] unsigned threads() const { return threads_; }
+    [[nodiscard]] const RayCaster* rayCaster() const { return caster_.get(); }
+    [[nodiscard]] std::span<const Rgb> surfaceReflectance() const { return surfaceReflectance_; }
+    [[nodiscard]] std::span<const Rgb> surfaceExitance() const { return surfaceExitance_; }
+    /// Sum over elements of A E, the larger band (W): the scale of the refinement threshold.
+    [[nodiscard]] double emittedPower() const;
+    /// Mean reflectance over the bands of the element's surface.
+    [[nodiscard]] double meanReflectance(ElementIndex e) const;
+
+private:
+    struct Split {
+        std::size_t link;
+        bool splitReceiver;
+    };
+
+    void linkRoots(Progress* progress);
+    /// Appends the link receiver <- source to `out` when the two can exchange light.
+    void makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out) const;
+    [[nodiscard]] double linkError(const Link& link) const;
+    [[nodiscard]] bool canSplit(ElementIndex e) const;
+    std::size_t refine();
+    void gather();
+    /// Returns the residual of the radiosity the gather started from.
+    double pushPull();
+    void mapSolution();
+    void setLeavesToEmission();
+
+    SolverOptions options_;
+    ElementTree tree_;
+    std::unique_ptr<RayCaster> caster_;
+    int visibilityRays_ = 0;
+    std::vector<Link> links_;
+    std::vector<Rgb> surfaceReflectance_;
+    std::vector<Rgb> surfaceExitance_;
+
+    struct PatchSample {
+        std::uint32_t surface, face;
+        glm::dvec3 centroid;
+        double area;
+    };
+    std::vector<PatchSample> patches_;
+    std::vector<ElementIndex> patchElement_;
+    std::size_t mappedTreeSize_ = 0;
+    std::vector<Rgb> solution_;
+
+    unsigned threads_ = 1;
+    std::vector<std::vector<Split>> splitsPerThread_;
+    std::vector<std::vector<Link>> linksPerThread_;
+    std::vector<std::vector<Rgb>> gatherPerThread_;
+    std::vector<Rgb> pushedIrradiance_;
+    std::size_t visibilityTests_ = 0;
+    IterationStats stats_;
+};
+
+/// Options under which the hierarchical solver refines `scene` to roughly `elements` elements:
+/// a minimum element area of a fraction of the scene's area per element and a link epsilon small
+/// enough that elements near it are reached where light arrives. Calibrated on the Cornell box.
+SolverOptions hierarchicalOptionsForElements(const Scene& scene, std::size_t elements, SolverOptions base = {});
+
+} // namespace radiant
