@@ -20,10 +20,14 @@ namespace {
 // an index could overflow.
 constexpr std::uint64_t kMaxSegments = std::uint64_t{1} << 24;
 
-/// Segments needed to cover `length` in steps of at most `step`, at least 1. The relative slack
-/// keeps 1.0000000000001 steps from becoming 2.
+/// Patches may exceed the requested area by this relative amount, so that a wall of 0.33 m read as
+/// the float 0.33000001 is still cut into 33 rows of 1 cm, not 34.
+constexpr double kAreaSlack = 4e-6;
+
+/// Segments needed to cover `length` in steps of at most `step`, at least 1 (a length within
+/// kAreaSlack / 2 of a whole number of steps takes that number).
 std::uint64_t segmentsFor(double length, double step) {
-    const double n = std::ceil(length / step * (1.0 - 1e-12));
+    const double n = std::ceil(length / step * (1.0 - kAreaSlack / 2));
     return static_cast<std::uint64_t>(std::clamp(n, 1.0, static_cast<double>(kMaxSegments)));
 }
 
@@ -189,7 +193,7 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
             const glm::dvec3 normal = glm::normalize(newellNormal(plan.corners, piece));
             const std::uint64_t nu = classes.segments(piece.edges[0]), nv = classes.segments(piece.edges[1]);
             const double largest = largestQuadCell(p, normal, nu, nv);
-            if (largest <= maxArea * (1 + 1e-12)) continue;
+            if (largest <= maxArea * (1 + kAreaSlack)) continue;
             if (nu >= kMaxSegments && nv >= kMaxSegments) continue;  // beyond any budget anyway
             // Both directions grow by at least one segment, so the loop always progresses.
             const double grow = std::sqrt(largest / maxArea);

@@ -39,7 +39,8 @@ struct Patch {
 };
 
 struct MeshingOptions {
-    double maxPatchArea = 0.01;          ///< m^2; every patch is at most this large (and not much smaller)
+    double maxPatchArea = 0.01;          ///< m^2; every patch is at most this large (and not much smaller),
+                                         ///< up to a relative 4e-6 that absorbs float-rounded dimensions
     std::size_t patchBudget = 2'000'000; ///< refuse (BudgetError, with the numbers) above this
 };
 

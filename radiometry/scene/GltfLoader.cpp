@@ -1,0 +1,237 @@
+#include "radiometry/scene/GltfLoader.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/gtc/quaternion.hpp>
+#include <glm/gtc/type_ptr.hpp>
+#include <glm/mat4x4.hpp>
+#include <tiny_gltf.h>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/scene/GltfAccessors.h"
+#include "radiometry/scene/GltfMaterials.h"
+#include "radiometry/scene/TriangleMerging.h"
+
+namespace radiant {
+namespace {
+
+/// tinygltf's messages can span lines; ours are one line.
+std::string oneLine(std::string text) {
+    while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
+    for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
+    return text;
+}
+
+std::string describe(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.3g", value);
+    return text;
+}
+
+bool isBinaryGltf(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    char magic[4] = {};
+    in.read(magic, 4);
+    return in.gcount() == 4 && magic[0] == 'g' && magic[1] == 'l' && magic[2] == 'T' && magic[3] == 'F';
+}
+
+glm::dmat4 localTransform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3) m = glm::translate(m, glm::dvec3(node.translation[0], node.translation[1], node.translation[2]));
+    if (node.rotation.size() == 4)
+        m *= glm::mat4_cast(glm::dquat(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]));  // glTF: x, y, z, w
+    if (node.scale.size() == 3) m = glm::scale(m, glm::dvec3(node.scale[0], node.scale[1], node.scale[2]));
+    return m;
+}
+
+struct Instance {
+    int node = 0;
+    glm::dmat4 world{1.0};
+};
+
+class Loader {
+public:
+    Loader(const std::string& path, const SceneLoadOptions& options) : path_(path), options_(options) {}
+
+    LoadedScene run() {
+        readModel();
+        const std::vector<Instance> instances = collectInstances();
+        checkTriangleBudget(instances);
+        for (const Instance& instance : instances) addNode(instance);
+        if (droppedTriangles_ > 0)
+            result_.warnings.push_back(path_ + ": dropped " + std::to_string(droppedTriangles_) +
+                                       " zero-area triangle(s), the first in " + firstDropped_);
+        if (result_.scene.surfaces.empty()) throw RadiantError({path_, ""}, "no triangles to light (no triangle primitives in the scene)");
+        result_.scene.name = path_;
+        return std::move(result_);
+    }
+
+private:
+    void readModel() {
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(path_, ec)) throw RadiantError({path_, ""}, "no such file");
+        tinygltf::TinyGLTF reader;
+        std::string error, warning;
+        const bool ok = isBinaryGltf(path_) ? reader.LoadBinaryFromFile(&model_, &error, &warning, path_)
+                                            : reader.LoadASCIIFromFile(&model_, &error, &warning, path_);
+        if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
+        if (!warning.empty()) result_.warnings.push_back(path_ + ": " + oneLine(warning));
+    }
+
+    std::vector<Instance> collectInstances() {
+        std::vector<int> roots;
+        if (!model_.scenes.empty()) {
+            const std::size_t which = model_.defaultScene >= 0 && static_cast<std::size_t>(model_.defaultScene) < model_.scenes.size()
+                                          ? static_cast<std::size_t>(model_.defaultScene)
+                                          : 0;
+            roots = model_.scenes[which].nodes;
+        } else {
+            // No scene: every node that is nobody's child.
+            std::set<int> children;
+            for (const auto& node : model_.nodes) children.insert(node.children.begin(), node.children.end());
+            for (int n = 0; n < static_cast<int>(model_.nodes.size()); ++n)
+                if (!children.count(n)) roots.push_back(n);
+        }
+        std::vector<Instance> instances;
+        for (int root : roots) visit(root, glm::dmat4(1.0), 0, instances);
+        return instances;
+    }
+
+    void visit(int node, const glm::dmat4& parent, int depth, std::vector<Instance>& instances) {
+        if (node < 0 || static_cast<std::size_t>(node) >= model_.nodes.size())
+            throw RadiantError({path_, "node " + std::to_string(node)},
+                               "out of range (node count " + std::to_string(model_.nodes.size()) + ")");
+        if (depth > 256) throw RadiantError({path_, "node " + std::to_string(node)}, "the node hierarchy has a cycle or is deeper than 256");
+        const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(node)];
+        const glm::dmat4 world = parent * localTransform(n);
+        if (n.mesh >= 0) instances.push_back({node, world});
+        for (int child : n.children) visit(child, world, depth + 1, instances);
+    }
+
+    void checkTriangleBudget(const std::vector<Instance>& instances) const {
+        double triangles = 0;
+        for (const Instance& instance : instances) {
+            const int mesh = model_.nodes[static_cast<std::size_t>(instance.node)].mesh;
+            if (static_cast<std::size_t>(mesh) >= model_.meshes.size()) continue;  // reported when read
+            for (const auto& primitive : model_.meshes[static_cast<std::size_t>(mesh)].primitives) {
+                const auto position = primitive.attributes.find("POSITION");
+                const std::size_t count = primitive.indices >= 0 ? detail::accessorCount(model_, primitive.indices)
+                                          : position != primitive.attributes.end() ? detail::accessorCount(model_, position->second)
+                                                                                    : 0;
+                triangles += static_cast<double>(count / 3);
+            }
+        }
+        if (triangles > static_cast<double>(options_.triangleBudget))
+            throw BudgetError({path_, ""}, "the scene has " + describe(triangles) + " triangles; the budget is " +
+                                               describe(static_cast<double>(options_.triangleBudget)));
+    }
+
+    std::size_t sceneMaterial(int gltfMaterial, const SourceLocation& where) {
+        if (gltfMaterial >= 0 && static_cast<std::size_t>(gltfMaterial) >= model_.materials.size())
+            throw RadiantError(where, "material " + std::to_string(gltfMaterial) + " out of range (material count " +
+                                          std::to_string(model_.materials.size()) + ")");
+        const auto known = materialOf_.find(gltfMaterial);
+        if (known != materialOf_.end()) return known->second;
+        Material material;
+        if (gltfMaterial < 0) {
+            material = {"default", Rgb{0.5}, ExitanceRgb{}};
+            result_.warnings.push_back(where.str() + ": no material; using reflectance 0.5");
+        } else {
+            material = detail::convertMaterial(model_, static_cast<std::size_t>(gltfMaterial), path_, result_.warnings);
+        }
+        result_.scene.materials.push_back(std::move(material));
+        materialOf_[gltfMaterial] = result_.scene.materials.size() - 1;
+        return result_.scene.materials.size() - 1;
+    }
+
+    std::string uniqueName(std::string name) {
+        const int seen = ++nameUses_[name];
+        return seen == 1 ? name : name + " (" + std::to_string(seen) + ")";
+    }
+
+    void addNode(const Instance& instance) {
+        const tinygltf::Node& node = model_.nodes[static_cast<std::size_t>(instance.node)];
+        if (static_cast<std::size_t>(node.mesh) >= model_.meshes.size())
+            throw RadiantError({path_, "node " + std::to_string(instance.node)},
+                               "mesh " + std::to_string(node.mesh) + " out of range (mesh count " + std::to_string(model_.meshes.size()) + ")");
+        const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
+        // A mirroring transform flips the winding; glTF says the front face flips with it.
+        const bool mirrored = glm::determinant(glm::dmat3(instance.world)) < 0;
+        for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
+            const tinygltf::Primitive& primitive = mesh.primitives[p];
+            const SourceLocation where{path_, "mesh " + std::to_string(node.mesh) + ", primitive " + std::to_string(p)};
+            const int mode = primitive.mode < 0 ? TINYGLTF_MODE_TRIANGLES : primitive.mode;
+            if (mode != TINYGLTF_MODE_TRIANGLES) {
+                result_.warnings.push_back(where.str() + ": mode " + std::to_string(mode) +
+                                           " is not a triangle list (mode 4); skipped");
+                continue;
+            }
+            const auto position = primitive.attributes.find("POSITION");
+            if (position == primitive.attributes.end()) throw RadiantError(where, "has no POSITION attribute");
+            std::vector<glm::dvec3> positions = detail::readPositions(model_, position->second, where);
+            std::vector<std::uint32_t> indices;
+            if (primitive.indices >= 0) {
+                indices = detail::readIndices(model_, primitive.indices, where);
+                for (std::uint32_t index : indices)
+                    if (index >= positions.size())
+                        throw RadiantError(where, "index " + std::to_string(index) + " out of range (vertex count " +
+                                                      std::to_string(positions.size()) + ")");
+            } else {
+                indices.resize(positions.size());
+                for (std::uint32_t i = 0; i < indices.size(); ++i) indices[i] = i;
+            }
+            if (indices.size() % 3 != 0)
+                result_.warnings.push_back(where.str() + ": " + std::to_string(indices.size()) +
+                                           " indices is not a multiple of 3; the last " + std::to_string(indices.size() % 3) + " ignored");
+            for (glm::dvec3& v : positions) v = glm::dvec3(instance.world * glm::dvec4(v, 1.0));
+
+            std::vector<std::array<std::uint32_t, 3>> triangles;
+            triangles.reserve(indices.size() / 3);
+            for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+                std::array<std::uint32_t, 3> tri{indices[t], indices[t + 1], indices[t + 2]};
+                if (mirrored) std::swap(tri[1], tri[2]);
+                const glm::dvec3 a = positions[tri[0]], b = positions[tri[1]], c = positions[tri[2]];
+                const double longest = std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+                // Zero area relative to the triangle's size (collinear or repeated corners).
+                if (!(glm::length(glm::cross(b - a, c - a)) > 1e-12 * longest * longest)) {
+                    if (droppedTriangles_++ == 0) firstDropped_ = where.element + " (triangle " + std::to_string(t / 3) + ")";
+                    continue;
+                }
+                triangles.push_back(tri);
+            }
+            if (triangles.empty()) continue;
+
+            std::string name = !node.name.empty() ? node.name : !mesh.name.empty() ? mesh.name : "mesh " + std::to_string(node.mesh);
+            Surface surface;
+            surface.name = uniqueName(std::move(name));
+            surface.material = sceneMaterial(primitive.material, where);
+            surface.faces = detail::mergeTriangles(positions, triangles);
+            surface.origin = where.element;
+            result_.scene.surfaces.push_back(std::move(surface));
+        }
+    }
+
+    std::string path_;
+    SceneLoadOptions options_;
+    tinygltf::Model model_;
+    LoadedScene result_;
+    std::map<int, std::size_t> materialOf_;
+    std::map<std::string, int> nameUses_;
+    std::size_t droppedTriangles_ = 0;
+    std::string firstDropped_;
+};
+
+} // namespace
+
+LoadedScene loadGltf(const std::string& path, const SceneLoadOptions& options) { return Loader(path, options).run(); }
+
+} // namespace radiant

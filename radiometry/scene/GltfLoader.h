@@ -1,0 +1,38 @@
+#pragma once
+// glTF 2.0 (.gltf with embedded, data-URI or external buffers, and .glb) into a Scene.
+//
+//  - Geometry: every node of the default scene (else scene 0, else every root node) with its
+//    transform (matrix or TRS) composed down the hierarchy; triangle primitives, indexed (u8, u16,
+//    u32) or not. Units are metres, as glTF defines them.
+//  - Faces: coplanar edge-adjacent triangles of one primitive that form a convex quad become one
+//    quad face, so a wall exported as two triangles is one face.
+//  - Surfaces: one per primitive instance, named after its node, else its mesh, else "mesh N",
+//    with " (2)", " (3)" ... where a name repeats; Surface::origin is "mesh M, primitive P".
+//  - Materials: reflectance = baseColorFactor x the mean of baseColorTexture (decoded, sRGB to
+//    linear) where there is one; exitance (W/m^2) = emissiveFactor x KHR_materials_emissive_strength.
+//    extras.radiant {"reflectance": [r, g, b], "exitance_W_m2": [r, g, b]} overrides either with
+//    exact SI values. A primitive without a material gets reflectance 0.5 (with a warning).
+//
+// Bad input throws RadiantError with one line naming the file and the element; recoverable
+// oddities (zero-area triangles, points and lines, reflectance >= 1 clamped to 0.999) are warnings.
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "radiometry/scene/Scene.h"
+
+namespace radiant {
+
+struct SceneLoadOptions {
+    std::size_t triangleBudget = 2'000'000;  ///< refuse (BudgetError, with the numbers) above this
+};
+
+struct LoadedScene {
+    Scene scene;
+    std::vector<std::string> warnings;  ///< one line each, already naming file and element
+};
+
+/// Loads a .gltf or .glb file. Scene::name is the path as given.
+LoadedScene loadGltf(const std::string& path, const SceneLoadOptions& options = {});
+
+} // namespace radiant
