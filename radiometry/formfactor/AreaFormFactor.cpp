@@ -210,7 +210,7 @@ double refine(AdaptiveState& state, const Cell& cell, double estimate, double to
 /// circumradii): the quadrature error falls roughly like (1 / (2 separation))^(2 order).
 int orderForSeparation(double separation, double accuracy) {
     const double ratio = 0.5 / separation;
-    const double order = std::log(std::max(accuracy, 1e-15) * 0.1) / (2 * std::log(ratio));
+    const double order = std::log(std::max(accuracy, 1e-15) * 0.01) / (2 * std::log(ratio));
     return std::clamp(static_cast<int>(std::ceil(order)), 1, kMaxGaussOrder);
 }
 
