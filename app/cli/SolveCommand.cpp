@@ -39,7 +39,7 @@ struct SolveOptions {
 
 Scene loadSceneByName(const std::string& nameOrPath) {
 #ifdef RADIANT_HAS_SCENE_LIBRARY
-    return loadScene(nameOrPath);
+    return loadScene(nameOrPath).scene;
 #else
     if (nameOrPath == "cornell-box") return makeCornellBox();
     throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
@@ -72,7 +72,7 @@ private:
     std::jthread printer_;
 };
 
-nlohmann::json rgbJson(const Rgb& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+nlohmann::ordered_json rgbJson(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 std::string csvField(const std::string& text) {
     if (text.find_first_of(",\"\n") == std::string::npos) return text;
@@ -127,7 +127,7 @@ int runSolve(const SolveOptions& options) {
                      stats.residual, options.tolerance, stats.iteration);
 
     const std::vector<Rgb>& B = solver->solution();
-    nlohmann::json surfaces = nlohmann::json::array();
+    nlohmann::ordered_json surfaces = nlohmann::ordered_json::array();
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const Material& material = scene.materials[scene.surfaces[s].material];
         double area = 0;
@@ -143,7 +143,7 @@ int runSolve(const SolveOptions& options) {
                             {"radiosity_W_m2", rgbJson(area > 0 ? power / area : Rgb(0.0))},
                             {"power_W", rgbJson(power)}});
     }
-    const nlohmann::json report = {
+    const nlohmann::ordered_json report = {
         {"scene", scene.name},
         {"method", std::string(methodName(method))},
         {"patches", mesh.size()},

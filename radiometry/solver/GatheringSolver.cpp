@@ -53,6 +53,11 @@ void GatheringSolver::gatherAll(std::vector<Rgb>& gathered) const {
     });
 }
 
+std::size_t GatheringSolver::bytes() const {
+    // area, reflectance, exitance, B, and one more Rgb per patch for the sweep's scratch array.
+    return matrix_->bytes() + materials_.size() * (sizeof(double) + 4 * sizeof(Rgb));
+}
+
 Rgb GatheringSolver::residualPower() {
     std::vector<Rgb> gathered;
     gatherAll(gathered);

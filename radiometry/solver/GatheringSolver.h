@@ -25,6 +25,8 @@ public:
     [[nodiscard]] const IterationStats& lastStats() const final { return stats_; }
 
     [[nodiscard]] const FormFactorMatrix& matrix() const { return *matrix_; }
+    /// Memory held: the matrix and the per-patch arrays.
+    [[nodiscard]] std::size_t bytes() const;
 
 protected:
     /// One sweep over every patch; returns sum_i A_i |r_i| per band (W) for the new solution, with

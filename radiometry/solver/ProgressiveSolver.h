@@ -41,6 +41,10 @@ public:
     [[nodiscard]] std::vector<Rgb> solutionWithAmbient() const;
     /// Radiosity received but not yet shot, W/m^2 per band (negative after a material got darker).
     [[nodiscard]] const std::vector<Rgb>& unshot() const { return unshot_; }
+    /// Memory held by the per-patch arrays (not the shot kernel's geometry and ray caster).
+    [[nodiscard]] std::size_t bytes() const {
+        return materials_.size() * (sizeof(double) * 2 + sizeof(Rgb) * 5);
+    }
 
 private:
     /// Refreshes the shooter choice and the residual from unshot_ (after reset or an edit).
