@@ -1,13 +1,19 @@
 #include "app/LabApp.h"
 
-#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "app/Lab.h"
 
 namespace radiant::app {
 
-// PLACEHOLDER until the first window lands.
-int runLab(const LabOptions&) {
-    std::fprintf(stderr, "radiant: the window is not available in this build yet\n");
-    return 2;
+int runLab(const LabOptions& options) {
+    LabOptions effective = options;
+    if (const char* scale = std::getenv("RADIANT_UI_SCALE")) effective.uiScale = std::strtof(scale, nullptr);
+    if (!(effective.uiScale > 0.0f)) effective.uiScale = 1.0f;
+    Lab lab(effective);
+    while (!lab.shouldClose()) lab.frame();
+    return 0;
 }
 
 } // namespace radiant::app

@@ -8,6 +8,10 @@ struct LabOptions {
     std::string scene = "cornell-box";
     int width = 1600;
     int height = 1000;
+    bool showPanels = true;  ///< false: the 3D view fills the window (pixel tests, clean captures)
+    bool visible = true;     ///< false: an offscreen window (tests that need no display output)
+    bool vsync = true;
+    float uiScale = 1.0f;    ///< ImGui text and spacing scale; RADIANT_UI_SCALE overrides it in runLab
 };
 
 /// Opens the window and runs until it is closed. Returns the process exit status.

@@ -1,6 +1,8 @@
 #include "render/camera/Camera.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 namespace radiant::render {
@@ -23,6 +25,17 @@ Camera cornellCamera() {
     camera.up = {0, 1, 0};
     constexpr double focalLengthMm = 35.0, filmHeightMm = 25.0;
     camera.fieldOfView = Radians(2.0 * std::atan(filmHeightMm / 2.0 / focalLengthMm));
+    return camera;
+}
+
+Camera framingCamera(const glm::dvec3& lo, const glm::dvec3& hi) {
+    Camera camera = cornellCamera();
+    const glm::dvec3 centre = (lo + hi) / 2.0;
+    const double radius = std::max(glm::length(hi - lo) / 2.0, 1e-3);
+    const double distance = radius / std::sin(camera.fieldOfView.value() / 2.0);
+    camera.eye = centre - camera.forward * distance;
+    camera.nearPlane = std::max(distance * 1e-3, 1e-4);
+    camera.farPlane = distance + radius * 4.0;
     return camera;
 }
 

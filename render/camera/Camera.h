@@ -39,6 +39,10 @@ struct Camera {
 /// along +z, up +y, a 35 mm lens on 25 mm film: field of view 2 atan(12.5 / 35).
 Camera cornellCamera();
 
+/// A camera looking along +z (up +y) from in front of the box [lo, hi], far enough that its
+/// bounding sphere fits the field of view: the home view of scenes without a published camera.
+Camera framingCamera(const glm::dvec3& lo, const glm::dvec3& hi);
+
 /// Where a world point lands in the viewport, in framebuffer pixels from the top-left; z is the
 /// window depth in [0, 1]. Points behind the eye give meaningless x, y (check depth).
 glm::dvec3 projectToPixel(const Camera& camera, const Viewport& viewport, const glm::dvec3& world);

@@ -1,0 +1,61 @@
+#include "app/panels/InfoPanel.h"
+
+#include <imgui.h>
+
+#include "app/ui/FrameStats.h"
+#include "app/ui/ImGuiLayer.h"
+
+namespace radiant::app {
+namespace {
+
+void row(const char* label, const char* format, auto... values) {
+    ImGui::TextDisabled("%s", label);
+    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
+    ImGui::Text(format, values...);
+}
+
+void control(const char* input, const char* action) {
+    ImGui::TextUnformatted(input);
+    // The column clears the longest input name ("Right/middle drag") at any font size.
+    ImGui::SameLine(ImGui::GetStyle().IndentSpacing * 0.25f + ImGui::CalcTextSize("Right/middle drag  ").x);
+    ImGui::TextDisabled("%s", action);
+}
+
+} // namespace
+
+void InfoPanel::draw() {
+    const double frameMs = frames_.medianSeconds() * 1e3;
+    row("Frame", "%.2f ms", frameMs);
+    ImGui::SameLine();
+    ImGui::TextDisabled("(median of %zu)", frames_.count());
+    row("Rate", "%.0f FPS", frameMs > 0 ? 1e3 / frameMs : 0.0);
+    row("Context", "OpenGL %d.%d core", gl_.major, gl_.minor);
+    if (!fallbackNote_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
+        ImGui::TextWrapped("%s", fallbackNote_.c_str());
+        ImGui::PopStyleColor();
+    }
+    ImGui::TextDisabled("Renderer");
+    ImGui::TextWrapped("%s", gl_.renderer.c_str());
+    ImGui::TextDisabled("Version");
+    ImGui::TextWrapped("%s", gl_.version.c_str());
+
+    ImGui::Spacing();
+    if (!editingScale_) scaleSlider_ = ui_.uiScale();
+    ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 4.5f);
+    // Applied when the slider is let go: rebuilding the font atlas under the cursor makes it jump.
+    ImGui::SliderFloat("UI scale", &scaleSlider_, 0.75f, 2.5f, "%.2fx");
+    editingScale_ = ImGui::IsItemActive();
+    if (ImGui::IsItemDeactivatedAfterEdit()) ui_.setUiScale(scaleSlider_);
+
+    ImGui::Spacing();
+    ImGui::TextDisabled("Controls");
+    control("Left drag", "orbit");
+    control("Right/middle drag", "pan");
+    control("Wheel", "zoom");
+    control("C", "Cornell camera");
+    control("H", "hide/show panels");
+    control("Esc", "quit");
+}
+
+} // namespace radiant::app

@@ -1,0 +1,15 @@
+#pragma once
+// One section of the lab's sidebar (Info, Scene, Solver, ...): each panel is its own class and file,
+// and draws its contents with ImGui when its header is open.
+namespace radiant::app {
+
+class Panel {
+public:
+    virtual ~Panel() = default;
+    [[nodiscard]] virtual const char* title() const = 0;
+    [[nodiscard]] virtual bool openByDefault() const { return true; }
+    /// Called inside the sidebar window, between the panel's header and the next one.
+    virtual void draw() = 0;
+};
+
+} // namespace radiant::app

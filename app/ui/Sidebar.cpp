@@ -1,0 +1,37 @@
+#include "app/ui/Sidebar.h"
+
+#include <imgui.h>
+
+namespace radiant::app {
+
+float Sidebar::draw(const std::string& heading, const std::string& subheading) {
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    // Wide enough for a GL renderer string and a labelled slider at any UI scale.
+    const float width = ImGui::GetFontSize() * 22.0f;
+    ImGui::SetNextWindowPos(viewport->WorkPos);
+    ImGui::SetNextWindowSize({width, viewport->WorkSize.y});
+    constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
+                                       ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                       ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+    ImGui::Begin("##sidebar", nullptr, flags);
+    ImGui::TextUnformatted(heading.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", subheading.c_str());
+    ImGui::Separator();
+    ImGui::Spacing();
+    for (const auto& panel : panels_) {
+        const ImGuiTreeNodeFlags headerFlags = panel->openByDefault() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+        if (ImGui::CollapsingHeader(panel->title(), headerFlags)) {
+            ImGui::PushID(panel.get());
+            ImGui::Indent(ImGui::GetStyle().IndentSpacing * 0.25f);
+            panel->draw();
+            ImGui::Unindent(ImGui::GetStyle().IndentSpacing * 0.25f);
+            ImGui::PopID();
+            ImGui::Spacing();
+        }
+    }
+    ImGui::End();
+    return width;
+}
+
+} // namespace radiant::app

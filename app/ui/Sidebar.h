@@ -1,0 +1,22 @@
+#pragma once
+// The panels docked at the window's left edge, full height, one collapsible section each, so the
+// 3D view keeps the rest of the window to itself and nothing floats over the box.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/panels/Panel.h"
+
+namespace radiant::app {
+
+class Sidebar {
+public:
+    void add(std::unique_ptr<Panel> panel) { panels_.push_back(std::move(panel)); }
+    /// Draws the sidebar; returns its width in ImGui (window) coordinates.
+    float draw(const std::string& heading, const std::string& subheading);
+
+private:
+    std::vector<std::unique_ptr<Panel>> panels_;
+};
+
+} // namespace radiant::app

@@ -1,0 +1,33 @@
+#include "app/window/CameraController.h"
+
+#include <imgui.h>
+#include <numbers>
+
+namespace radiant::app {
+
+void CameraController::update(render::OrbitCamera& camera, const render::Viewport& view) {
+    const ImGuiIO& io = ImGui::GetIO();
+    const bool overView = io.MousePos.x >= static_cast<float>(view.x) &&
+                          io.MousePos.x < static_cast<float>(view.x + view.width) &&
+                          io.MousePos.y >= static_cast<float>(view.y) &&
+                          io.MousePos.y < static_cast<float>(view.y + view.height);
+    if (dragButton_ >= 0 && !io.MouseDown[dragButton_]) dragButton_ = -1;
+    if (dragButton_ < 0 && overView && !io.WantCaptureMouse)
+        for (int button = 0; button < 3; ++button)
+            if (io.MouseClicked[button]) dragButton_ = button;
+
+    if (dragButton_ >= 0) {
+        const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
+        const double height = static_cast<double>(view.height);
+        if (dragButton_ == 0) {
+            // Dragging across the view's full height turns the box half a turn: the object follows the hand.
+            const double radiansPerPixel = std::numbers::pi / height;
+            camera.orbit(Radians(-dx * radiansPerPixel), Radians(-dy * radiansPerPixel));
+        } else {
+            camera.pan(dx / height, -dy / height);
+        }
+    }
+    if (overView && !io.WantCaptureMouse && io.MouseWheel != 0.0f) camera.zoom(static_cast<double>(io.MouseWheel));
+}
+
+} // namespace radiant::app

@@ -1,0 +1,19 @@
+#pragma once
+// Mouse gestures to orbit-camera motions, read from ImGui's input state each frame: drags that
+// start over a panel belong to the panel (ImGui's WantCaptureMouse), drags that start in the 3D
+// view move the camera until the button is released.
+#include "render/camera/OrbitCamera.h"
+
+namespace radiant::app {
+
+class CameraController {
+public:
+    /// Call between ImGui's NewFrame and Render. `view` is the 3D view in ImGui coordinates
+    /// (top-left origin); `pixelRatio` converts none of it: gestures are scaled by the view's size.
+    void update(render::OrbitCamera& camera, const render::Viewport& view);
+
+private:
+    int dragButton_ = -1;  ///< 0 left (orbit), 1 right or 2 middle (pan); -1 none
+};
+
+} // namespace radiant::app
