@@ -5,9 +5,10 @@
 // last corner doubled, i.e. the Duffy collapse, whose Jacobian vanishes on the collapsed edge). Far
 // pairs get a fixed order chosen from distance over size. Near pairs - above all patches sharing an
 // edge or a corner, where the kernel's derivatives blow up like log(distance to the edge) - are
-// refined adaptively: each cell compares its rule with the two halvings (in u and in v), accepts
-// when both agree, and otherwise bisects in the direction that changed most, so refinement
-// concentrates in thin strips along a shared edge instead of a quadtree.
+// refined adaptively: each cell compares its rule with the two halvings (in u and in v) and is
+// bisected in the direction that changed most, so refinement concentrates in thin strips along a
+// shared edge instead of a quadtree; the cell with the largest error is split next, until the
+// errors sum to the tolerance.
 //
 // Quadrature with an analytic inner kernel: Schroeder & Hanrahan, "On the form factor between two
 // polygons", SIGGRAPH 1993 (discussion of the log singularity of adjacent polygons); Baum,
@@ -113,13 +114,30 @@ std::size_t frontPieces(const PatchPolygon& from, const PatchPolygon& to, double
     return 2;
 }
 
+/// A triangle's corners rotated so that the corner farthest from `target` comes last: the Duffy
+/// collapse then sits away from where the kernel is singular (an edge shared with `to`).
+Piece collapseFarthestCorner(Piece piece, const glm::dvec3& target) {
+    if (piece.count != 3) return piece;
+    std::size_t farthest = 0;
+    double farthestDistance = -1;
+    for (std::size_t i = 0; i < 3; ++i) {
+        const glm::dvec3 d = piece.corners[i] - target;
+        if (glm::dot(d, d) > farthestDistance) {
+            farthestDistance = glm::dot(d, d);
+            farthest = i;
+        }
+    }
+    std::rotate(piece.corners.begin(), piece.corners.begin() + static_cast<std::ptrdiff_t>(farthest + 1),
+                piece.corners.begin() + 3);
+    return piece;
+}
+
 /// The integrand over a piece's parameter square: the kernel times the bilinear map's Jacobian (a
 /// triangle is the quad with its last corner doubled).
 class FromToIntegrand {
 public:
     FromToIntegrand(const Piece& piece, const glm::dvec3& normal, const PatchPolygon& to)
-        : a_(piece.corners[0]), b_(piece.corners[1]), c_(piece.corners[2]),
-          d_(piece.count == 4 ? piece.corners[3] : piece.corners[2]), normal_(normal), to_(to) {}
+        : FromToIntegrand(collapseFarthestCorner(piece, to.centroid), normal, to, 0) {}
 
     /// Integral of kernel * dA over the cell with the Gauss rule, in m^2.
     [[nodiscard]] double integrate(const Cell& cell, const GaussRule& rule) const {
@@ -149,6 +167,10 @@ public:
     }
 
 private:
+    FromToIntegrand(const Piece& piece, const glm::dvec3& normal, const PatchPolygon& to, int)
+        : a_(piece.corners[0]), b_(piece.corners[1]), c_(piece.corners[2]),
+          d_(piece.count == 4 ? piece.corners[3] : piece.corners[2]), normal_(normal), to_(to) {}
+
     glm::dvec3 a_, b_, c_, d_, normal_;
     const PatchPolygon& to_;
 };
@@ -173,37 +195,62 @@ double maxHeightAbove(const PatchPolygon& polygon, const glm::dvec3& point, cons
 // adaptively; touching polygons always have a ratio <= 1.
 constexpr double kAdaptiveSeparation = 1.5;
 constexpr int kAdaptiveOrder = 3;
-constexpr int kMaxCells = 4096;
-constexpr int kMaxDepth = 40;
+constexpr std::size_t kMaxCells = 256;
+constexpr double kSmallFormFactor = 1e-3;
 
-struct AdaptiveState {
-    const FromToIntegrand& integrand;
-    const GaussRule& rule;
-    int cells = 0;
+/// A cell of the adaptive quadrature with its Gauss estimate refined by halving in u or in v,
+/// whichever changed it more, and that change as its error estimate.
+struct AdaptiveCell {
+    Cell cell;
+    double value = 0;
+    double error = 0;
+    bool splitU = true;
+    std::array<double, 2> halves{};  ///< estimates of the two halves in the chosen direction
 };
 
-double refine(AdaptiveState& state, const Cell& cell, double estimate, double tolerance, int depth) {
+AdaptiveCell assess(const FromToIntegrand& integrand, const GaussRule& rule, const Cell& cell, double estimate) {
     const double uMid = 0.5 * (cell.u0 + cell.u1);
     const double vMid = 0.5 * (cell.v0 + cell.v1);
-    const Cell left{cell.u0, uMid, cell.v0, cell.v1};
-    const Cell right{uMid, cell.u1, cell.v0, cell.v1};
-    const Cell bottom{cell.u0, cell.u1, cell.v0, vMid};
-    const Cell top{cell.u0, cell.u1, vMid, cell.v1};
-    const double leftValue = state.integrand.integrate(left, state.rule);
-    const double rightValue = state.integrand.integrate(right, state.rule);
-    const double bottomValue = state.integrand.integrate(bottom, state.rule);
-    const double topValue = state.integrand.integrate(top, state.rule);
-    state.cells += 4;
-    const double changeU = std::abs(leftValue + rightValue - estimate);
-    const double changeV = std::abs(bottomValue + topValue - estimate);
-    const bool splitU = changeU >= changeV;
-    if (std::max(changeU, changeV) <= tolerance || depth >= kMaxDepth || state.cells >= kMaxCells)
-        return splitU ? leftValue + rightValue : bottomValue + topValue;
-    if (splitU)
-        return refine(state, left, leftValue, 0.5 * tolerance, depth + 1) +
-               refine(state, right, rightValue, 0.5 * tolerance, depth + 1);
-    return refine(state, bottom, bottomValue, 0.5 * tolerance, depth + 1) +
-           refine(state, top, topValue, 0.5 * tolerance, depth + 1);
+    const std::array<double, 2> alongU{integrand.integrate({cell.u0, uMid, cell.v0, cell.v1}, rule),
+                                       integrand.integrate({uMid, cell.u1, cell.v0, cell.v1}, rule)};
+    const std::array<double, 2> alongV{integrand.integrate({cell.u0, cell.u1, cell.v0, vMid}, rule),
+                                       integrand.integrate({cell.u0, cell.u1, vMid, cell.v1}, rule)};
+    const double changeU = std::abs(alongU[0] + alongU[1] - estimate);
+    const double changeV = std::abs(alongV[0] + alongV[1] - estimate);
+    AdaptiveCell assessed;
+    assessed.cell = cell;
+    assessed.splitU = changeU >= changeV;
+    assessed.halves = assessed.splitU ? alongU : alongV;
+    assessed.value = assessed.halves[0] + assessed.halves[1];
+    assessed.error = std::max(changeU, changeV);
+    return assessed;
+}
+
+/// Globally adaptive (as QUADPACK's qag, in two dimensions): keep splitting the cell with the
+/// largest error estimate until the estimates sum to the tolerance. A local tolerance halved per
+/// split would never be met at the end of a shared edge, where the error only falls like the area.
+double integrateAdaptively(const FromToIntegrand& integrand, const GaussRule& rule, double estimate, double tolerance) {
+    std::array<AdaptiveCell, kMaxCells> cells;
+    std::size_t count = 1;
+    cells[0] = assess(integrand, rule, {0, 1, 0, 1}, estimate);
+    double totalError = cells[0].error;
+    while (totalError > tolerance && count + 1 <= cells.size()) {
+        std::size_t worst = 0;
+        for (std::size_t i = 1; i < count; ++i)
+            if (cells[i].error > cells[worst].error) worst = i;
+        const AdaptiveCell parent = cells[worst];
+        const Cell& c = parent.cell;
+        const double uMid = 0.5 * (c.u0 + c.u1);
+        const double vMid = 0.5 * (c.v0 + c.v1);
+        const Cell first = parent.splitU ? Cell{c.u0, uMid, c.v0, c.v1} : Cell{c.u0, c.u1, c.v0, vMid};
+        const Cell second = parent.splitU ? Cell{uMid, c.u1, c.v0, c.v1} : Cell{c.u0, c.u1, vMid, c.v1};
+        cells[worst] = assess(integrand, rule, first, parent.halves[0]);
+        cells[count++] = assess(integrand, rule, second, parent.halves[1]);
+        totalError += cells[worst].error + cells[count - 1].error - parent.error;
+    }
+    double value = 0;
+    for (std::size_t i = 0; i < count; ++i) value += cells[i].value;
+    return value;
 }
 
 /// Gauss order for a pair separated by `separation` (centroid distance over the sum of
@@ -254,13 +301,13 @@ double unoccludedFormFactor(const PatchPolygon& from, const PatchPolygon& to, do
         estimates[p] = FromToIntegrand(pieces[p], from.normal, to).integrate(whole, rule);
         total += std::abs(estimates[p]);
     }
-    // Aim well inside the requested accuracy: the estimates of errors are themselves estimates.
-    const double tolerance = std::max(0.25 * accuracy * total, 1e-12 * from.area) / static_cast<double>(std::max<std::size_t>(pieceCount, 1));
-    for (std::size_t p = 0; p < pieceCount; ++p) {
-        const FromToIntegrand integrand(pieces[p], from.normal, to);
-        AdaptiveState state{integrand, rule};
-        integral += refine(state, whole, estimates[p], tolerance, 0);
-    }
+    // Aim well inside the requested accuracy (error estimates are themselves estimates): relative
+    // for F above kSmallFormFactor, absolute below, so a sliver of a pair does not refine for ever
+    // over an F that no row sum will notice.
+    const double tolerance = 0.25 * accuracy * std::max(total, kSmallFormFactor * from.area) /
+                             static_cast<double>(std::max<std::size_t>(pieceCount, 1));
+    for (std::size_t p = 0; p < pieceCount; ++p)
+        integral += integrateAdaptively(FromToIntegrand(pieces[p], from.normal, to), rule, estimates[p], tolerance);
     return std::max(0.0, integral) / from.area;
 }
 
