@@ -482,7 +482,7 @@ TEST_CASE("Cornell box: every method's surface means agree with a tight Gauss-Se
             MESSAGE(methodName(method) << " skipped: " << e.what());
             continue;
         }
-        solveTo(*solver, 1e-5, 20000);
+        solveTo(*solver, 1e-4, 20000);  // leaves < 0.1% of the emitted power unaccounted
         const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
         for (std::size_t s = 0; s < means.size(); ++s) {
             CAPTURE(cornell.surfaces[s].name);
