@@ -1,15 +1,189 @@
+// `radiant probe SCENE --point X,Y,Z --normal X,Y,Z [--target SURFACE]`: solve the scene, then read
+// radiosity, radiance, irradiance and a target surface's solid angle and form factor at one point
+// (radiometry/probe/Probe.h), printed as the JSON of docs/ARCHITECTURE.
 #include <CLI/CLI.hpp>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <iostream>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/probe/Probe.h"
+#include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/Solver.h"
+#if __has_include("radiometry/scene/SceneLibrary.h")
+#include "radiometry/scene/SceneLibrary.h"
+#define RADIANT_PROBE_HAS_SCENE_LIBRARY 1
+#endif
 
 namespace radiant::app {
 
-// PLACEHOLDER until its issue lands: refuses to run rather than print made-up numbers.
+namespace {
+
+struct ProbeCommandOptions {
+    std::string scene;
+    std::string point;
+    std::string normal;
+    std::string target;  ///< empty: the first emitting surface
+    std::string method = "gauss-seidel";
+    double maxPatchArea = MeshingOptions{}.maxPatchArea;
+    double tolerance = 1e-4;
+    std::size_t maxIterations = 10000;
+    std::string json = "-";
+};
+
+Scene loadProbeScene(const std::string& nameOrPath) {
+#ifdef RADIANT_PROBE_HAS_SCENE_LIBRARY
+    return loadScene(nameOrPath).scene;
+#else
+    if (nameOrPath == "cornell-box") return makeCornellBox();
+    throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
+#endif
+}
+
+/// "X,Y,Z" -> vector; anything else is an error naming the option and the value.
+glm::dvec3 parseVector(const std::string& text, const char* option) {
+    glm::dvec3 v(0.0);
+    std::size_t start = 0;
+    for (int axis = 0; axis < 3; ++axis) {
+        const std::size_t end = axis < 2 ? text.find(',', start) : text.size();
+        bool ok = end != std::string::npos && end > start;
+        if (ok) {
+            const std::string field = text.substr(start, end - start);
+            char* parsedEnd = nullptr;
+            v[axis] = std::strtod(field.c_str(), &parsedEnd);
+            ok = parsedEnd == field.c_str() + field.size() && std::isfinite(v[axis]);
+        }
+        if (!ok) throw RadiantError({"", option}, "expected three numbers X,Y,Z, got '" + text + "'");
+        start = end + 1;
+    }
+    return v;
+}
+
+std::size_t chooseTarget(const Scene& scene, const std::string& name) {
+    if (!name.empty()) {
+        const std::size_t found = scene.findSurface(name);
+        if (found == Scene::npos) {
+            std::string known;
+            for (const Surface& s : scene.surfaces) known += (known.empty() ? "'" : ", '") + s.name + "'";
+            throw RadiantError({scene.name, "--target"}, "no surface '" + name + "' (surfaces: " + known + ")");
+        }
+        return found;
+    }
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
+        if (scene.materials.at(scene.surfaces[s].material).emits()) return s;
+    throw RadiantError({scene.name, "--target"}, "the scene has no emitting surface; name a target");
+}
+
+/// Per-patch exitance: the solution when no solver is available (direct light only).
+std::vector<Rgb> emissionOnly(const Scene& scene, const PatchMesh& mesh) {
+    std::vector<Rgb> b(mesh.size());
+    for (std::size_t p = 0; p < mesh.size(); ++p)
+        b[p] = scene.materials.at(scene.surfaces.at(mesh.patches[p].surface).material).exitance.value();
+    return b;
+}
+
+nlohmann::json rgbJson(const Rgb& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
+
+int runProbe(const ProbeCommandOptions& options) {
+    const glm::dvec3 point = parseVector(options.point, "--point");
+    const glm::dvec3 normal = parseVector(options.normal, "--normal");
+    if (!(options.maxPatchArea > 0))
+        throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
+    if (!(options.tolerance > 0))
+        throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
+    const SolverMethod method = parseMethod(options.method);
+
+    const Scene scene = loadProbeScene(options.scene);
+    const std::size_t target = chooseTarget(scene, options.target);
+    MeshingOptions meshing;
+    meshing.maxPatchArea = options.maxPatchArea;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    const RayCaster rays(scene);
+    const Probe probe(scene, mesh, &rays);
+    const SurfacePoint at = probe.locate(point, normal);  // bad input fails before the long solve
+
+    std::vector<Rgb> radiosity;
+    std::string solution;
+    std::size_t iterations = 0;
+    double residual = 1;
+    try {
+        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+        while (iterations < options.maxIterations) {
+            residual = solver->step().residual;
+            ++iterations;
+            if (residual <= options.tolerance) break;
+        }
+        radiosity = solver->solution();
+        solution = "solved";
+    } catch (const BudgetError&) {
+        throw;
+    } catch (const RadiantError& e) {
+        // A solver still being written throws "not available"; the probe stays useful without it.
+        if (std::string(e.what()).find("not available") == std::string::npos) throw;
+        radiosity = emissionOnly(scene, mesh);
+        solution = "direct light only";
+        iterations = 0;
+    }
+
+    const ProbeReading reading = probe.measure(at, normal, radiosity, target);
+    nlohmann::json out;
+    out["scene"] = scene.name;
+    out["method"] = std::string(methodName(method));
+    out["solution"] = solution;
+    out["iterations"] = iterations;
+    if (solution == "solved") out["residual"] = residual;
+    out["patches"] = mesh.size();
+    out["point"] = rgbJson(reading.at.point);
+    out["normal"] = rgbJson(reading.normal);
+    out["surface"] = scene.surfaces[reading.at.surface].name;
+    out["radiosity_W_m2"] = rgbJson(reading.radiosity.value());
+    out["radiance_W_m2_sr"] = rgbJson(reading.radiance.value());
+    out["irradiance_W_m2"] = rgbJson(reading.irradiance.value());
+    const TargetReading& t = *reading.target;
+    out["target"] = {{"name", t.name},
+                     {"solid_angle_sr", t.solidAngle.value()},
+                     {"projected_solid_angle_sr", t.projectedSolidAngle.value()},
+                     {"form_factor", t.formFactor},
+                     {"unoccluded_solid_angle_sr", t.unoccludedSolidAngle.value()},
+                     {"unoccluded_form_factor", t.unoccludedFormFactor}};
+
+    const std::string text = out.dump(2) + "\n";
+    if (options.json == "-") {
+        std::cout << text << std::flush;
+    } else {
+        std::ofstream file(options.json);
+        if (!file) throw RadiantError({options.json, "--json"}, "cannot open for writing");
+        file << text;
+        if (!file) throw RadiantError({options.json, "--json"}, "write failed");
+    }
+    return 0;
+}
+
+} // namespace
+
 Subcommand addProbeCommand(CLI::App& root) {
-    CLI::App* sub = root.add_subcommand("probe", "(not available yet)");
-    sub->allow_extras();
-    return {sub, [] () -> int { throw RadiantError({"", "probe"}, "not available in this build yet"); }};
+    auto options = std::make_shared<ProbeCommandOptions>();
+    CLI::App* sub = root.add_subcommand("probe", "Read B, L, E and a target's solid angle and form factor at a point");
+    sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
+    sub->add_option("--point", options->point, "X,Y,Z on a surface, metres")->required();
+    sub->add_option("--normal", options->normal, "X,Y,Z: the probe's facing direction")->required();
+    sub->add_option("--target", options->target, "surface to measure (default: the first emitting surface)");
+    sub->add_option("--method", options->method, "jacobi, gauss-seidel, progressive, hierarchical or importance")
+        ->capture_default_str();
+    sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
+    sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
+    sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
+    return {sub, [options] { return runProbe(*options); }};
 }
 
 } // namespace radiant::app

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -48,6 +49,29 @@ SolidAngle signedPolygonSolidAngle(const glm::dvec3& x, std::span<const glm::dve
 
 SolidAngle polygonSolidAngle(const glm::dvec3& x, std::span<const glm::dvec3> polygon) {
     return SolidAngle(std::abs(signedPolygonSolidAngle(x, polygon).value()));
+}
+
+SolidAngle solidAngleAboveHorizon(const glm::dvec3& x, const glm::dvec3& n, std::span<const glm::dvec3> polygon) {
+    const double length = glm::length(n);
+    if (!(length > 0))
+        throw RadiantError({"", "solid angle above the horizon"}, "the normal must be non-zero");
+    const glm::dvec3 up = n / length;
+    std::vector<glm::dvec3> clipped;
+    clipped.reserve(polygon.size() + 1);
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const glm::dvec3& start = polygon[(i + polygon.size() - 1) % polygon.size()];
+        const glm::dvec3& end = polygon[i];
+        const double hStart = glm::dot(up, start - x);
+        const double hEnd = glm::dot(up, end - x);
+        if ((hStart >= 0) != (hEnd >= 0)) {
+            glm::dvec3 crossing = start + (end - start) * (hStart / (hStart - hEnd));
+            crossing -= up * glm::dot(up, crossing - x);  // exactly on the horizon
+            clipped.push_back(crossing);
+        }
+        if (hEnd >= 0) clipped.push_back(end);
+    }
+    if (clipped.size() < 3) return SolidAngle(0.0);
+    return polygonSolidAngle(x, clipped);
 }
 
 } // namespace radiant

@@ -25,6 +25,11 @@ SolidAngle signedPolygonSolidAngle(const glm::dvec3& x, std::span<const glm::dve
 /// The solid angle of the polygon seen from x, from either side: |signedPolygonSolidAngle|.
 SolidAngle polygonSolidAngle(const glm::dvec3& x, std::span<const glm::dvec3> polygon);
 
+/// The solid angle of the part of a planar convex polygon above the plane through x with normal n:
+/// what a point on a surface can see of it (the part below its horizon is clipped away first,
+/// Sutherland-Hodgman). Either side of the polygon counts. Throws RadiantError for a zero normal.
+SolidAngle solidAngleAboveHorizon(const glm::dvec3& x, const glm::dvec3& n, std::span<const glm::dvec3> polygon);
+
 /// The signed solid angle of the triangle a, b, c seen from the origin (Van Oosterom & Strackee):
 /// positive when the origin lies on the side its normal (b - a) x (c - a) points to.
 SolidAngle signedTriangleSolidAngle(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c);

@@ -1,0 +1,219 @@
+#include "radiometry/probe/Probe.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <sstream>
+#include <vector>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/formfactor/FormFactor.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/probe/PolygonSamples.h"
+#include "radiometry/probe/RadiosityInterpolation.h"
+#include "radiometry/solidangle/PolygonSolidAngle.h"
+#include "radiometry/sources/DiffuseEmitter.h"
+
+namespace radiant {
+
+namespace {
+
+std::string formatPoint(const glm::dvec3& p) {
+    std::ostringstream out;
+    out.precision(6);
+    out << p.x << "," << p.y << "," << p.z;
+    return out.str();
+}
+
+/// How far x lies outside a convex planar face, measured in its plane (<= 0 inside).
+double distanceOutsideFace(const Face& face, const glm::dvec3& x) {
+    double outside = std::numeric_limits<double>::lowest();
+    const std::size_t count = face.vertices.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3& a = face.vertices[i];
+        const glm::dvec3& b = face.vertices[(i + 1) % count];
+        const glm::dvec3 inward = glm::cross(face.normal, b - a);
+        const double length = glm::length(inward);
+        if (length > 0) outside = std::max(outside, -glm::dot(x - a, inward) / length);
+    }
+    return outside;
+}
+
+/// Visible fractions of a polygon seen from x with normal n, from stratified sample points, each
+/// ray weighted by the kernel whose integral it corrects.
+struct VisibleFractions {
+    double solidAngle = 1;  ///< weights |cos_y| / r^2 dA
+    double formFactor = 1;  ///< weights cos_x cos_y / r^2 dA, front side only
+};
+
+VisibleFractions visibleFractions(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& polygon,
+                                  const RayCaster& rays, int perSide, std::uint64_t seed,
+                                  std::vector<PolygonSample>& samples) {
+    stratifiedPolygonSamples(polygon, perSide, seed, samples);
+    double solidAngleAll = 0, solidAngleVisible = 0, formFactorAll = 0, formFactorVisible = 0;
+    for (const PolygonSample& s : samples) {
+        const glm::dvec3 d = s.point - x;
+        const double r2 = glm::dot(d, d);
+        if (!(r2 > 0)) continue;
+        const double r = std::sqrt(r2);
+        const double cosX = glm::dot(n, d) / r;
+        if (cosX <= 0) continue;  // below x's horizon: x cannot see it at all
+        const double cosY = -glm::dot(polygon.normal, d) / r;
+        const double wSolidAngle = s.area * std::abs(cosY) / r2;
+        const double wFormFactor = s.area * cosX * std::max(0.0, cosY) / r2;
+        if (wSolidAngle <= 0 && wFormFactor <= 0) continue;
+        const bool visible = !rays.occluded(x, s.point);
+        solidAngleAll += wSolidAngle;
+        formFactorAll += wFormFactor;
+        if (visible) {
+            solidAngleVisible += wSolidAngle;
+            formFactorVisible += wFormFactor;
+        }
+    }
+    VisibleFractions f;
+    if (solidAngleAll > 0) f.solidAngle = solidAngleVisible / solidAngleAll;
+    if (formFactorAll > 0) f.formFactor = formFactorVisible / formFactorAll;
+    return f;
+}
+
+glm::dvec3 unitNormal(const glm::dvec3& n) {
+    const double length = glm::length(n);
+    if (!(length > 0) || !std::isfinite(length))
+        throw RadiantError({"", "--normal"}, "the normal (" + formatPoint(n) + ") must be a finite non-zero vector");
+    return n / length;
+}
+
+} // namespace
+
+Probe::Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, const ProbeOptions& options)
+    : scene_(scene), mesh_(mesh), rays_(rays), options_(options), locator_(mesh) {
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& v : mesh.vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    if (!mesh.vertices.empty()) sceneSize_ = std::max(glm::length(hi - lo), 1e-9);
+}
+
+SurfacePoint Probe::locate(const glm::dvec3& x, const glm::dvec3& n) const {
+    const glm::dvec3 up = unitNormal(n);
+    const double tolerance = options_.onSurfaceTolerance * sceneSize_;
+    std::optional<SurfacePoint> best;
+    double bestAlignment = -2;
+    std::string nearestName;
+    double nearestDistance = std::numeric_limits<double>::infinity();
+    for (std::uint32_t s = 0; s < scene_.surfaces.size(); ++s) {
+        const Surface& surface = scene_.surfaces[s];
+        for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
+            const Face& face = surface.faces[f];
+            if (face.vertices.size() < 3) continue;
+            const double height = glm::dot(face.normal, x - face.vertices[0]);
+            const double outside = std::max(0.0, distanceOutsideFace(face, x));
+            const double distance = std::hypot(height, outside);
+            if (distance < nearestDistance) {
+                nearestDistance = distance;
+                nearestName = surface.name;
+            }
+            if (std::abs(height) > tolerance || outside > tolerance) continue;
+            const double alignment = glm::dot(face.normal, up);
+            if (alignment > bestAlignment) {
+                bestAlignment = alignment;
+                best = SurfacePoint{s, f, 0, x - height * face.normal};
+            }
+        }
+    }
+    if (!best) {
+        std::ostringstream message;
+        message << "the point (" << formatPoint(x) << ") lies on no surface";
+        if (!nearestName.empty()) message << " (nearest: '" << nearestName << "', " << nearestDistance << " m away)";
+        throw RadiantError({scene_.name, "--point"}, message.str());
+    }
+    if (bestAlignment <= 0)
+        throw RadiantError({scene_.name, "--normal"},
+                           "the normal (" + formatPoint(n) + ") points into surface '" +
+                               scene_.surfaces[best->surface].name + "' at (" + formatPoint(x) + ")");
+    best->patch = locator_.find(best->surface, best->face, best->point);
+    if (best->patch == PatchLocator::npos)
+        throw RadiantError({scene_.name, "--point"}, "surface '" + scene_.surfaces[best->surface].name +
+                                                         "' has no patches at (" + formatPoint(x) + ")");
+    return *best;
+}
+
+ProbeReading Probe::measure(const glm::dvec3& x, const glm::dvec3& n, std::span<const Rgb> radiosity,
+                            std::optional<std::size_t> targetSurface) const {
+    return measure(locate(x, n), n, radiosity, targetSurface);
+}
+
+ProbeReading Probe::measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
+                            std::optional<std::size_t> targetSurface) const {
+    ProbeReading reading;
+    reading.at = at;
+    reading.normal = unitNormal(n);
+    const std::vector<Rgb> vertexValues = vertexRadiosity(mesh_, radiosity);
+    reading.radiosity = RadiosityRgb(interpolateRadiosity(mesh_, at.patch, at.point, vertexValues));
+    reading.radiance = radianceFromRadiosity(reading.radiosity);
+    reading.irradiance = irradiance(at, reading.normal, radiosity);
+    if (targetSurface) reading.target = target(at, reading.normal, *targetSurface);
+    return reading;
+}
+
+IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity) const {
+    if (radiosity.size() != mesh_.patches.size())
+        throw RadiantError({"", "probe"}, "the solution has " + std::to_string(radiosity.size()) + " values for " +
+                                              std::to_string(mesh_.patches.size()) + " patches");
+    const glm::dvec3 up = unitNormal(n);
+    std::vector<PolygonSample> samples;
+    Rgb sum(0.0);
+    for (std::size_t j = 0; j < mesh_.patches.size(); ++j) {
+        const Patch& patch = mesh_.patches[j];
+        // The patches of x's own planar face contribute nothing (they lie in x's tangent plane).
+        if (patch.surface == at.surface && patch.face == at.face) continue;
+        const Rgb& b = radiosity[j];
+        if (b.x == 0 && b.y == 0 && b.z == 0) continue;
+        const PatchPolygon polygon = mesh_.polygon(j);
+        const double f = pointToPolygonFormFactor(at.point, up, polygon.corners());
+        if (f <= 0) continue;
+        double visible = 1;
+        if (rays_ != nullptr && options_.gatherRaysPerSide > 0)
+            visible = visibleFractions(at.point, up, polygon, *rays_, options_.gatherRaysPerSide,
+                                       mixBits(options_.seed ^ mixBits(j)), samples)
+                          .formFactor;
+        sum += b * (f * visible);
+    }
+    return IrradianceRgb(sum);
+}
+
+TargetReading Probe::target(const SurfacePoint& at, const glm::dvec3& n, std::size_t surface) const {
+    if (surface >= scene_.surfaces.size() || surface + 1 >= mesh_.surfaceFirstPatch.size())
+        throw RadiantError({scene_.name, "--target"}, "no surface number " + std::to_string(surface));
+    const glm::dvec3 up = unitNormal(n);
+    TargetReading reading;
+    reading.surface = surface;
+    reading.name = scene_.surfaces[surface].name;
+    std::vector<PolygonSample> samples;
+    double solidAngle = 0, formFactor = 0;
+    for (std::size_t j = mesh_.surfaceFirstPatch[surface]; j < mesh_.surfaceFirstPatch[surface + 1]; ++j) {
+        const PatchPolygon polygon = mesh_.polygon(j);
+        const double omega = solidAngleAboveHorizon(at.point, up, polygon.corners()).value();
+        const double f = pointToPolygonFormFactor(at.point, up, polygon.corners());
+        reading.unoccludedSolidAngle += SolidAngle(omega);
+        reading.unoccludedFormFactor += f;
+        if (omega <= 0 && f <= 0) continue;
+        VisibleFractions visible;
+        if (rays_ != nullptr && options_.targetRaysPerSide > 0)
+            visible = visibleFractions(at.point, up, polygon, *rays_, options_.targetRaysPerSide,
+                                       mixBits(options_.seed ^ mixBits(j)), samples);
+        solidAngle += omega * visible.solidAngle;
+        formFactor += f * visible.formFactor;
+    }
+    reading.solidAngle = SolidAngle(solidAngle);
+    reading.formFactor = formFactor;
+    reading.projectedSolidAngle = SolidAngle(std::numbers::pi * formFactor);
+    return reading;
+}
+
+} // namespace radiant

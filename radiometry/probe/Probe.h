@@ -1,0 +1,97 @@
+#pragma once
+// The point probe: what a small detector lying on a surface at x, facing n, would read.
+//
+//   B(x)  radiosity, interpolated from the per-patch solution (RadiosityInterpolation.h)
+//   L(x)  = B(x) / pi, the radiance leaving a diffuse surface
+//   E(x)  = sum_j B_j F(dx -> j) V(x, j): irradiance gathered at the exact point. F(dx -> j) is
+//         Lambert's exact point-to-polygon form factor; V the visible fraction of patch j seen from
+//         x, from stratified rays weighted by the form-factor kernel cos_x cos_j / r^2, so that V F
+//         estimates the occluded integral. This is the gather of Wallace, Elmquist & Haines, "A Ray
+//         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point.
+//   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
+//   projected solid angle pi F(dx -> target) and form factor, each times its visible fraction
+//   (rays weighted by the solid-angle kernel |cos_j| / r^2, resp. the form-factor kernel).
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "radiometry/mesh/PatchLocator.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/Scene.h"
+#include "radiometry/units/Quantity.h"
+
+namespace radiant {
+
+class RayCaster;
+
+struct ProbeOptions {
+    int gatherRaysPerSide = 4;  ///< irradiance: k x k stratified rays to each patch that x sees
+    int targetRaysPerSide = 8;  ///< target readings: k x k rays to each patch of the target
+    std::uint64_t seed = 1;     ///< the jitter is deterministic for a seed
+    /// How far from a face's plane a point may lie and still be on it, relative to the scene's size.
+    double onSurfaceTolerance = 1e-4;
+};
+
+/// Where on the scene a probe sits.
+struct SurfacePoint {
+    std::uint32_t surface = 0;
+    std::uint32_t face = 0;
+    std::size_t patch = 0;
+    glm::dvec3 point{0.0};  ///< projected onto the face's plane
+};
+
+struct TargetReading {
+    std::size_t surface = 0;
+    std::string name;
+    SolidAngle solidAngle{};           ///< visible, above x's horizon (sr)
+    SolidAngle projectedSolidAngle{};  ///< visible: pi x formFactor (sr)
+    double formFactor = 0;             ///< visible F(dx -> target)
+    SolidAngle unoccludedSolidAngle{};
+    double unoccludedFormFactor = 0;
+};
+
+struct ProbeReading {
+    SurfacePoint at;
+    glm::dvec3 normal{0, 0, 1};   ///< unit
+    RadiosityRgb radiosity{};     ///< W/m^2
+    RadianceRgb radiance{};       ///< W/(m^2 sr)
+    IrradianceRgb irradiance{};   ///< W/m^2
+    std::optional<TargetReading> target;
+};
+
+class Probe {
+public:
+    /// Keeps references: scene, mesh and rays must outlive the probe. rays may be null (no occlusion).
+    Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, const ProbeOptions& options = {});
+
+    /// The face (and patch) whose polygon contains x within the tolerance, preferring the face whose
+    /// normal agrees best with n. Throws RadiantError naming the point (and the nearest surface) when
+    /// x lies on no surface, or when n points into the surface it lies on.
+    [[nodiscard]] SurfacePoint locate(const glm::dvec3& x, const glm::dvec3& n) const;
+
+    /// Every reading at x with normal n; `radiosity` is the solver's per-patch solution (W/m^2).
+    [[nodiscard]] ProbeReading measure(const glm::dvec3& x, const glm::dvec3& n, std::span<const Rgb> radiosity,
+                                       std::optional<std::size_t> targetSurface = std::nullopt) const;
+    /// The same for a point already located (a ray hit from picking).
+    [[nodiscard]] ProbeReading measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
+                                       std::optional<std::size_t> targetSurface = std::nullopt) const;
+
+    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face.
+    [[nodiscard]] IrradianceRgb irradiance(const SurfacePoint& at, const glm::dvec3& n,
+                                           std::span<const Rgb> radiosity) const;
+    /// Solid angle, projected solid angle and form factor of a surface from x, with visibility.
+    [[nodiscard]] TargetReading target(const SurfacePoint& at, const glm::dvec3& n, std::size_t surface) const;
+
+private:
+    const Scene& scene_;
+    const PatchMesh& mesh_;
+    const RayCaster* rays_;
+    ProbeOptions options_;
+    PatchLocator locator_;
+    double sceneSize_ = 1;
+};
+
+} // namespace radiant

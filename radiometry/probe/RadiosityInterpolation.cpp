@@ -1,0 +1,74 @@
+#include "radiometry/probe/RadiosityInterpolation.h"
+
+#include <algorithm>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "radiometry/common/Error.h"
+
+namespace radiant {
+
+std::vector<Rgb> vertexRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadiosity) {
+    if (patchRadiosity.size() != mesh.patches.size())
+        throw RadiantError({"", "radiosity interpolation"},
+                           "the solution has " + std::to_string(patchRadiosity.size()) + " values for " +
+                               std::to_string(mesh.patches.size()) + " patches");
+    std::vector<Rgb> sum(mesh.vertices.size(), Rgb(0.0));
+    std::vector<double> weight(mesh.vertices.size(), 0.0);
+    for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
+        const Patch& patch = mesh.patches[p];
+        for (std::size_t c = 0; c < patch.cornerCount; ++c) {
+            sum[patch.corners[c]] += patch.area * patchRadiosity[p];
+            weight[patch.corners[c]] += patch.area;
+        }
+    }
+    for (std::size_t v = 0; v < sum.size(); ++v)
+        if (weight[v] > 0) sum[v] /= weight[v];
+    return sum;
+}
+
+std::array<double, 4> wachspressCoordinates(std::span<const glm::dvec3> corners, const glm::dvec3& normal,
+                                            const glm::dvec3& point) {
+    const std::size_t n = corners.size();
+    std::array<double, 4> weights{};
+    if (n < 3 || n > 4) return weights;
+    // Signed doubled areas of (point, v_j, v_j+1), clamped so a point just outside lands on the border.
+    std::array<double, 4> edgeArea{};
+    for (std::size_t j = 0; j < n; ++j)
+        edgeArea[j] = std::max(0.0, glm::dot(normal, glm::cross(corners[j] - point, corners[(j + 1) % n] - point)));
+    // Product form w_i = C_i prod_{j != i-1, i} A_j: no division, so it stays finite on the border.
+    double total = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+        const glm::dvec3& previous = corners[(i + n - 1) % n];
+        const glm::dvec3& next = corners[(i + 1) % n];
+        double w = glm::dot(normal, glm::cross(corners[i] - previous, next - previous));
+        for (std::size_t j = 0; j < n; ++j)
+            if (j != i && j != (i + n - 1) % n) w *= edgeArea[j];
+        weights[i] = std::max(0.0, w);
+        total += weights[i];
+    }
+    if (total > 0) {
+        for (double& w : weights) w /= total;
+        return weights;
+    }
+    // Degenerate (a point outside beyond a corner clamps every product to zero): take the nearest corner.
+    std::size_t nearest = 0;
+    for (std::size_t i = 1; i < n; ++i)
+        if (glm::length(corners[i] - point) < glm::length(corners[nearest] - point)) nearest = i;
+    weights[nearest] = 1;
+    return weights;
+}
+
+Rgb interpolateRadiosity(const PatchMesh& mesh, std::size_t patch, const glm::dvec3& point,
+                         std::span<const Rgb> vertexValues) {
+    const Patch& p = mesh.patches.at(patch);
+    std::array<glm::dvec3, 4> corners{};
+    for (std::size_t c = 0; c < p.cornerCount; ++c) corners[c] = mesh.vertices[p.corners[c]];
+    const auto w = wachspressCoordinates(std::span(corners.data(), p.cornerCount), p.normal, point);
+    Rgb value(0.0);
+    for (std::size_t c = 0; c < p.cornerCount; ++c) value += w[c] * vertexValues[p.corners[c]];
+    return value;
+}
+
+} // namespace radiant

@@ -1,0 +1,216 @@
+// The point probe on scenes built in code, against closed forms (oracles.md): the differential
+// area to a parallel rectangle with its corner on the normal, F = 1/(2 pi) [A/sqrt(1+A^2)
+// atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))], and the corner-rectangle solid angle
+// atan(ab / (h sqrt(a^2+b^2+h^2))). Any rectangle over a point splits into signed corner rectangles.
+#include <doctest/doctest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <optional>
+#include <unistd.h>
+#include <memory>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/probe/Probe.h"
+#include "radiometry/probe/RadiosityInterpolation.h"
+#include "radiometry/scene/BuiltinScenes.h"
+
+using namespace radiant;
+
+namespace {
+constexpr double kPi = std::numbers::pi;
+
+double cornerFormFactor(double a, double b, double c) {
+    const double A = a / c, B = b / c;
+    return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
+            B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
+           (2 * kPi);
+}
+double cornerSolidAngle(double a, double b, double h) { return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h))); }
+
+/// A quantity of the rectangle [x0, x1] x [y0, y1] at height h seen from the origin, from the
+/// corner-rectangle formula g(a, b, h) by inclusion-exclusion (signed extents).
+template <class CornerFormula>
+double rectangleFromCorners(CornerFormula g, double x0, double x1, double y0, double y1, double h) {
+    const auto signedCorner = [&](double x, double y) {
+        const double value = g(std::abs(x), std::abs(y), h);
+        return (x < 0) != (y < 0) ? -value : value;
+    };
+    return signedCorner(x1, y1) - signedCorner(x0, y1) - signedCorner(x1, y0) + signedCorner(x0, y0);
+}
+
+Face rectangleFace(std::array<glm::dvec3, 4> corners) {
+    Face face;
+    face.vertices.assign(corners.begin(), corners.end());
+    face.updateGeometry();
+    return face;
+}
+
+/// A unit-square "receiver" at z = 0 facing +z, centred on the origin; a unit-square "emitter" at
+/// z = h facing -z (exitance 1, black); optionally a black "blocker" at z = h / 2 covering
+/// x <= blockerEdge (facing -z).
+Scene parallelSquares(double h, std::optional<double> blockerEdge = std::nullopt) {
+    Scene scene;
+    scene.name = "parallel squares";
+    scene.materials = {{"receiver", Rgb(0.5), ExitanceRgb{}}, {"emitter", Rgb(0.0), ExitanceRgb(Rgb(1.0))},
+                       {"blocker", Rgb(0.0), ExitanceRgb{}}};
+    scene.surfaces.push_back(
+        {"receiver", 0, {rectangleFace({{{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0}}})}, "test"});
+    scene.surfaces.push_back(
+        {"emitter", 1, {rectangleFace({{{-0.5, -0.5, h}, {-0.5, 0.5, h}, {0.5, 0.5, h}, {0.5, -0.5, h}}})}, "test"});
+    if (blockerEdge) {
+        const double e = *blockerEdge, z = h / 2;
+        scene.surfaces.push_back(
+            {"blocker", 2, {rectangleFace({{{-1, -1, z}, {-1, 1, z}, {e, 1, z}, {e, -1, z}}})}, "test"});
+    }
+    return scene;
+}
+
+MeshingOptions meshing(double maxPatchArea) {
+    MeshingOptions options;
+    options.maxPatchArea = maxPatchArea;
+    return options;
+}
+
+/// B = 1 on the emitter's patches, 0 elsewhere.
+std::vector<Rgb> emitterOnly(const PatchMesh& mesh, std::uint32_t emitter) {
+    std::vector<Rgb> b(mesh.size(), Rgb(0.0));
+    for (std::size_t p = 0; p < mesh.size(); ++p)
+        if (mesh.patches[p].surface == emitter) b[p] = Rgb(1.0);
+    return b;
+}
+} // namespace
+
+TEST_SUITE("probe") {
+
+TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner-rectangle closed forms") {
+    for (double h : {0.5, 1.0, 2.0})
+        for (glm::dvec3 x : {glm::dvec3(0, 0, 0), glm::dvec3(0.2, -0.1, 0), glm::dvec3(-0.45, 0.3, 0)}) {
+            CAPTURE(h);
+            CAPTURE(x.x);
+            CAPTURE(x.y);
+            const Scene scene = parallelSquares(h);
+            REQUIRE(scene.surfaces[1].faces[0].normal.z == doctest::Approx(-1.0));
+            const PatchMesh mesh = meshScene(scene, meshing(0.01));
+            const RayCaster rays(scene);
+            const Probe probe(scene, mesh, &rays);
+            const ProbeReading r = probe.measure(x, {0, 0, 1}, emitterOnly(mesh, 1), std::size_t{1});
+            const double expectedF = rectangleFromCorners(cornerFormFactor, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
+                                                          0.5 - x.y, h);
+            const double expectedOmega = rectangleFromCorners(cornerSolidAngle, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
+                                                              0.5 - x.y, h);
+            if (x == glm::dvec3(0.0)) {  // the centre: four equal 0.5 x 0.5 corner rectangles
+                CHECK(expectedF == doctest::Approx(4 * cornerFormFactor(0.5, 0.5, h)).epsilon(1e-14));
+                CHECK(expectedOmega == doctest::Approx(4 * cornerSolidAngle(0.5, 0.5, h)).epsilon(1e-14));
+            }
+            REQUIRE(r.target);
+            CHECK(r.target->name == "emitter");
+            CHECK(std::abs(r.target->formFactor - expectedF) < 1e-6);
+            CHECK(std::abs(r.target->projectedSolidAngle.value() - kPi * expectedF) < 1e-6);
+            CHECK(std::abs(r.target->solidAngle.value() - expectedOmega) < 1e-6);
+            for (int band = 0; band < 3; ++band) CHECK(std::abs(r.irradiance.value()[band] - expectedF) < 1e-6);
+            CHECK(r.radiosity.value().x == 0.0);  // the receiver's own patches are dark
+            CHECK(scene.surfaces[r.at.surface].name == "receiver");
+        }
+}
+
+TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
+    // Seen from the origin, a blocker edge at x = e, height h/2 projects to x = 2e on the emitter:
+    // the visible part is [2e, 0.5] x [-0.5, 0.5].
+    for (double h : {1.0, 2.0})
+        for (double e : {0.0, 0.125, -0.1}) {
+            CAPTURE(h);
+            CAPTURE(e);
+            const Scene scene = parallelSquares(h, e);
+            const PatchMesh mesh = meshScene(scene, meshing(0.01));
+            const RayCaster rays(scene);
+            const Probe probe(scene, mesh, &rays);
+            const ProbeReading r = probe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), emitterOnly(mesh, 1), std::size_t{1});
+            const double visibleF = rectangleFromCorners(cornerFormFactor, 2 * e, 0.5, -0.5, 0.5, h);
+            const double visibleOmega = rectangleFromCorners(cornerSolidAngle, 2 * e, 0.5, -0.5, 0.5, h);
+            const double fullF = 4 * cornerFormFactor(0.5, 0.5, h);
+            REQUIRE(r.target);
+            CHECK(r.target->unoccludedFormFactor == doctest::Approx(fullF).epsilon(1e-9));
+            CHECK(r.target->formFactor == doctest::Approx(visibleF).epsilon(2e-3));
+            CHECK(r.target->solidAngle.value() == doctest::Approx(visibleOmega).epsilon(2e-3));
+            CHECK(r.irradiance.value().x == doctest::Approx(visibleF).epsilon(5e-3));
+        }
+}
+
+TEST_CASE("radiosity interpolation reproduces a linear field inside a surface and B = pi L") {
+    const Scene scene = parallelSquares(1.0);
+    const PatchMesh mesh = meshScene(scene, meshing(0.01));
+    const auto field = [](const glm::dvec3& p) { return Rgb(1 + 2 * p.x, 3 - p.y, 0.5 + p.x + p.y); };
+    std::vector<Rgb> b(mesh.size(), Rgb(0.0));
+    for (std::size_t p = 0; p < mesh.size(); ++p)
+        if (mesh.patches[p].surface == 0) b[p] = field(mesh.patches[p].centroid);
+    const Probe probe(scene, mesh, nullptr);
+    // Away from the border ring of patches, nodal averaging of a linear field is exact, and so is
+    // Wachspress (bilinear) interpolation of it.
+    for (glm::dvec3 x : {glm::dvec3(0.0), glm::dvec3(0.13, -0.27, 0), glm::dvec3(-0.3, 0.35, 0)}) {
+        const ProbeReading r = probe.measure(x, {0, 0, 1}, b);
+        for (int band = 0; band < 3; ++band) {
+            CHECK(r.radiosity.value()[band] == doctest::Approx(field(x)[band]).epsilon(1e-12));
+            CHECK(r.radiance.value()[band] == doctest::Approx(field(x)[band] / kPi).epsilon(1e-12));
+        }
+    }
+    // Wachspress coordinates: barycentric on a triangle.
+    const std::array<glm::dvec3, 3> triangle{{{0, 0, 0}, {2, 0, 0}, {0, 1, 0}}};
+    const auto w = wachspressCoordinates(triangle, {0, 0, 1}, {0.5, 0.25, 0});
+    CHECK(w[0] == doctest::Approx(0.5));
+    CHECK(w[1] == doctest::Approx(0.25));
+    CHECK(w[2] == doctest::Approx(0.25));
+}
+
+TEST_CASE("a point off every surface or a normal into the surface is refused") {
+    const Scene scene = parallelSquares(1.0);
+    const PatchMesh mesh = meshScene(scene, meshing(0.05));
+    const Probe probe(scene, mesh, nullptr);
+    CHECK_THROWS_AS((void)probe.locate({0, 0, 0.3}, {0, 0, 1}), RadiantError);
+    CHECK_THROWS_AS((void)probe.locate({0.7, 0, 0}, {0, 0, 1}), RadiantError);
+    CHECK_THROWS_AS((void)probe.locate({0, 0, 0}, {0, 0, -1}), RadiantError);
+    CHECK_THROWS_AS((void)probe.locate({0, 0, 0}, {0, 0, 0}), RadiantError);
+    CHECK(probe.locate({0.1, 0.1, 1.0}, {0, 0, -1}).surface == 1);
+}
+
+TEST_CASE("radiant probe on the built-in parallel plates prints the closed forms") {
+    // The built-in: emitter [0,1]^2 at y = 0 facing +y (exitance 1, black), receiver at y = 1.
+    // At the receiver's centre the emitter is four 0.5 x 0.5 corner rectangles 1 m away; the black
+    // emitter's radiosity is exactly its exitance, so E = F x 1 W/m^2.
+    const std::string output = "/tmp/radiant-test-probe-" + std::to_string(::getpid()) + ".json";
+    const std::string command = std::string(RADIANT_BINARY) +
+                                " probe parallel-plates --point 0.5,1,0.5 --normal 0,-1,0 --target emitter --json " +
+                                output;
+    REQUIRE(std::system(command.c_str()) == 0);
+    std::ifstream in(output);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::remove(output.c_str());
+    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);
+    const double omega = 4 * cornerSolidAngle(0.5, 0.5, 1.0);
+    CHECK(j["surface"] == "receiver");
+    CHECK(j["target"]["name"] == "emitter");
+    CHECK(std::abs(j["target"]["form_factor"].get<double>() - F) < 1e-4);
+    CHECK(std::abs(j["target"]["projected_solid_angle_sr"].get<double>() - kPi * F) < 1e-4);
+    CHECK(std::abs(j["target"]["solid_angle_sr"].get<double>() - omega) < 1e-4);
+    for (int band = 0; band < 3; ++band) {
+        CHECK(std::abs(j["irradiance_W_m2"][band].get<double>() - F) < 1e-4);
+        CHECK(j["radiance_W_m2_sr"][band].get<double>() ==
+              doctest::Approx(j["radiosity_W_m2"][band].get<double>() / kPi).epsilon(1e-12));
+    }
+    // A bad vector exits 2 with one line naming the option.
+    CHECK(std::system((std::string(RADIANT_BINARY) + " probe parallel-plates --point 0.5,1 --normal 0,-1,0 2>/dev/null")
+                          .c_str()) != 0);
+}
+
+} // TEST_SUITE
