@@ -18,6 +18,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "render/FlatSceneRenderer.h"
+#include "render/OffscreenRender.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -139,6 +140,10 @@ render::ImageRgb8 Lab::frameAndCapture() {
     render::ImageRgb8 image;
     state_->frame(&image);
     return image;
+}
+
+render::ImageRgb8 Lab::renderOffscreen(int width, int height) const {
+    return render::renderOffscreen(*state_->renderer, state_->orbit.camera(), width, height, kBackground);
 }
 
 render::Viewport Lab::sceneViewport() const { return state_->viewport; }

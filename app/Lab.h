@@ -26,6 +26,9 @@ public:
     /// As frame(), and returns the framebuffer as drawn (panels included when shown), top row first.
     render::ImageRgb8 frameAndCapture();
 
+    /// The 3D view alone, drawn with the current camera into an offscreen width x height image.
+    [[nodiscard]] render::ImageRgb8 renderOffscreen(int width, int height) const;
+
     /// The 3D view's rectangle in framebuffer pixels during the last frame (top-left origin).
     [[nodiscard]] render::Viewport sceneViewport() const;
     /// The camera the last frame was drawn with.
