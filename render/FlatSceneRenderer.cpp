@@ -1,6 +1,7 @@
 #include "render/FlatSceneRenderer.h"
 
 #include <cstddef>
+#include <glm/geometric.hpp>
 
 #include "render/SceneTriangles.h"
 #include "render/gl/Buffer.h"
@@ -41,6 +42,9 @@ void FlatSceneRenderer::draw(const Camera& camera, double aspect) const {
     gl_->program.use();
     gl_->program.set("viewProjection", glm::mat4(camera.viewProjection(aspect)));
     gl_->program.set("eye", glm::vec3(camera.eye));
+    const glm::dvec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
+    const glm::dvec3 up = glm::cross(right, camera.forward);
+    gl_->program.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
     gl_->layout.bind();
     glDrawArrays(GL_TRIANGLES, 0, gl_->vertexCount);
     glBindVertexArray(0);

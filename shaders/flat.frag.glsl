@@ -1,12 +1,15 @@
 #version 330 core
-// Reflectance as colour, dimmed a little where the face turns away from the eye so creases read
-// (a "headlight"; not a radiometric quantity). Colours are linear; the framebuffer wants sRGB.
+// Reflectance as colour, dimmed a little where the face turns away from the eye and from a key
+// direction fixed to the camera (above, behind, to the right), so creases and parallel faces at
+// different depths read apart. A display aid, not a radiometric quantity: the patch renderer shows
+// radiosity instead. Colours are linear; the framebuffer wants sRGB.
 in vec3 worldPosition;
 flat in vec3 faceNormal;
 flat in vec3 faceColour;
 flat in float faceEmissive;
 
 uniform vec3 eye;
+uniform vec3 keyDirection;  // unit, toward the key
 
 out vec4 fragColour;
 
@@ -16,7 +19,10 @@ vec3 linearToSrgb(vec3 c) {
 }
 
 void main() {
-    float facing = abs(dot(normalize(faceNormal), normalize(eye - worldPosition)));
-    float headlight = mix(0.55 + 0.45 * facing, 1.0, faceEmissive);
-    fragColour = vec4(linearToSrgb(faceColour * headlight), 1.0);
+    vec3 n = normalize(faceNormal);
+    vec3 toEye = normalize(eye - worldPosition);
+    // Light the side the viewer sees: walls are viewed from inside, blocks from outside.
+    if (dot(n, toEye) < 0.0) n = -n;
+    float shade = 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
+    fragColour = vec4(linearToSrgb(faceColour * mix(shade, 1.0, faceEmissive)), 1.0);
 }

@@ -15,9 +15,10 @@ void row(const char* label, const char* format, auto... values) {
 }
 
 void control(const char* input, const char* action) {
+    const float start = ImGui::GetCursorPosX();
     ImGui::TextUnformatted(input);
-    // The column clears the longest input name ("Right/middle drag") at any font size.
-    ImGui::SameLine(ImGui::GetStyle().IndentSpacing * 0.25f + ImGui::CalcTextSize("Right/middle drag  ").x);
+    // The column clears the longest input name at any font size.
+    ImGui::SameLine(start + ImGui::CalcTextSize("Right/middle drag").x + ImGui::GetFontSize());
     ImGui::TextDisabled("%s", action);
 }
 
