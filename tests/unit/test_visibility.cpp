@@ -9,6 +9,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -223,6 +224,79 @@ TEST_CASE("visibility: a square blocker halfway between parallel plates hides th
         CHECK(std::abs(occluded / unoccluded - (1 - blocked)) < 3 * std::sqrt(blocked * (1 - blocked) / 1024));
         CHECK(bottom.area * occluded == doctest::Approx(top.area * formFactor(top, bottom, &rays, options)).epsilon(1e-3));
     }
+}
+
+TEST_CASE("ray caster: occlusion in the Cornell box agrees with clipping segments against the blocks") {
+    // Independent route: each block is a convex prism (its faces' planes and the floor); a segment is
+    // blocked when Cyrus-Beck clipping against those planes leaves a piece of it.
+    const Scene box = makeCornellBox();
+    const RayCaster rays(box);
+    const auto crossesBlock = [](const Surface& block, const glm::dvec3& p, const glm::dvec3& q) {
+        double enter = 0, leave = 1;
+        const auto clip = [&](const glm::dvec3& outward, double offset) {
+            const double a = glm::dot(outward, p) - offset, b = glm::dot(outward, q) - offset;
+            if (a >= 0 && b >= 0) return false;
+            if (a < 0 && b < 0) return true;
+            const double t = a / (a - b);
+            if (a >= 0) enter = std::max(enter, t);
+            else leave = std::min(leave, t);
+            return true;
+        };
+        for (const Face& face : block.faces)
+            if (!clip(face.normal, glm::dot(face.normal, face.vertices[0]))) return false;
+        return clip({0, -1, 0}, 0) && leave - enter > 1e-9;
+    };
+    const Surface& shortBlock = box.surfaces[box.findSurface("short block")];
+    const Surface& tallBlock = box.surfaces[box.findSurface("tall block")];
+    const Face& floor = box.surfaces[box.findSurface("floor")].faces[0];
+    const Face& ceiling = box.surfaces[box.findSurface("ceiling")].faces[0];
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    const auto pointOn = [&](const Face& face) {
+        const double u = uniform(random), v = uniform(random);
+        return (1 - u) * (1 - v) * face.vertices[0] + u * (1 - v) * face.vertices[1] + u * v * face.vertices[2] +
+               (1 - u) * v * face.vertices[3];
+    };
+    const int segments = 20000;
+    int disagreements = 0, blocked = 0;
+    for (int i = 0; i < segments; ++i) {
+        const glm::dvec3 p = pointOn(floor), q = pointOn(ceiling);
+        const bool expected = crossesBlock(shortBlock, p, q) || crossesBlock(tallBlock, p, q);
+        blocked += expected ? 1 : 0;
+        disagreements += rays.occluded(p, q) != expected ? 1 : 0;
+    }
+    CHECK(blocked > segments / 10);     // the test exercises both outcomes
+    CHECK(disagreements <= 2);          // float BVH against double planes: grazing hits may differ
+}
+
+TEST_CASE("visibility: concurrent queries on one ray caster agree with sequential ones") {
+    // The Cornell box's blocks hide part of the floor from the ceiling: fractions strictly between
+    // 0 and 1, computed for the same pairs on two threads at once and then on one.
+    const Scene box = makeCornellBox();
+    const RayCaster rays(box);
+    std::vector<PatchPolygon> floorAndCeiling;
+    for (const char* name : {"floor", "ceiling"})
+        for (const Face& face : box.surfaces[box.findSurface(name)].faces) floorAndCeiling.push_back(polygonOf(face));
+    FormFactorOptions options;
+    options.visibilityRays = 256;
+    const std::size_t pairs = floorAndCeiling.size() - 1;
+    std::vector<double> concurrent(2 * pairs);
+    {
+        std::vector<std::jthread> threads;
+        for (std::size_t t = 0; t < 2; ++t)
+            threads.emplace_back([&, t] {
+                for (std::size_t k = 0; k < pairs; ++k)
+                    concurrent[t * pairs + k] = visibilityFraction(floorAndCeiling[0], floorAndCeiling[k + 1], &rays, options);
+            });
+    }
+    for (std::size_t k = 0; k < pairs; ++k) {
+        const double sequential = visibilityFraction(floorAndCeiling[0], floorAndCeiling[k + 1], &rays, options);
+        CHECK(concurrent[k] == sequential);
+        CHECK(concurrent[pairs + k] == sequential);
+    }
+    const double floorToCeiling = visibilityFraction(floorAndCeiling[0], floorAndCeiling[1], &rays, options);
+    CHECK(floorToCeiling > 0.2);
+    CHECK(floorToCeiling < 1.0);
 }
 
 TEST_CASE("visibility: without a ray caster or rays, everything is visible") {
