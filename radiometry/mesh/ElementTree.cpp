@@ -83,34 +83,32 @@ ElementIndex ElementTree::append(const PatchPolygon& polygon, const Node& node) 
     return index;
 }
 
-ElementIndex ElementTree::subdivide(ElementIndex e) {
-    if (nodes_[e].firstChild != kNoElement) return nodes_[e].firstChild;
-    const PatchPolygon parentPolygon = polygons_[e];  // copy: append() may reallocate
-    const Node child{e, kNoElement, nodes_[e].surface, nodes_[e].depth + 1};
-    const auto& v = parentPolygon.vertices;
+std::array<PatchPolygon, 4> splitElementPolygon(const PatchPolygon& parent) {
+    const auto& v = parent.vertices;
     const auto mid = [](const glm::dvec3& a, const glm::dvec3& b) { return 0.5 * (a + b); };
-    ElementIndex first = kNoElement;
-    const auto add = [&](std::initializer_list<glm::dvec3> corners) {
+    const auto make = [&](std::initializer_list<glm::dvec3> corners) {
         PatchPolygon polygon = makeElementPolygon({corners.begin(), corners.size()});
-        polygon.normal = parentPolygon.normal;  // children of a planar element share its plane
-        const ElementIndex index = append(polygon, child);
-        if (first == kNoElement) first = index;
+        polygon.normal = parent.normal;  // children of a planar element share its plane
+        return polygon;
     };
-    if (parentPolygon.count == 4) {
+    if (parent.count == 4) {
         // Bilinear split: edge midpoints and the parametric centre (the mean of the corners).
         const glm::dvec3 m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m23 = mid(v[2], v[3]), m30 = mid(v[3], v[0]);
         const glm::dvec3 centre = 0.25 * (v[0] + v[1] + v[2] + v[3]);
-        add({v[0], m01, centre, m30});
-        add({m01, v[1], m12, centre});
-        add({centre, m12, v[2], m23});
-        add({m30, centre, m23, v[3]});
-    } else {
-        const glm::dvec3 m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m20 = mid(v[2], v[0]);
-        add({v[0], m01, m20});
-        add({m01, v[1], m12});
-        add({m20, m12, v[2]});
-        add({m01, m12, m20});  // the medial triangle keeps the parent's winding
+        return {make({v[0], m01, centre, m30}), make({m01, v[1], m12, centre}), make({centre, m12, v[2], m23}),
+                make({m30, centre, m23, v[3]})};
     }
+    const glm::dvec3 m01 = mid(v[0], v[1]), m12 = mid(v[1], v[2]), m20 = mid(v[2], v[0]);
+    // The medial triangle (last) keeps the parent's winding.
+    return {make({v[0], m01, m20}), make({m01, v[1], m12}), make({m20, m12, v[2]}), make({m01, m12, m20})};
+}
+
+ElementIndex ElementTree::subdivide(ElementIndex e) {
+    if (nodes_[e].firstChild != kNoElement) return nodes_[e].firstChild;
+    const std::array<PatchPolygon, 4> children = splitElementPolygon(polygons_[e]);
+    const Node child{e, kNoElement, nodes_[e].surface, nodes_[e].depth + 1};
+    const ElementIndex first = append(children[0], child);
+    for (std::size_t c = 1; c < children.size(); ++c) append(children[c], child);
     nodes_[e].firstChild = first;
     return first;
 }

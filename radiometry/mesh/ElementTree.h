@@ -7,6 +7,7 @@
 // Nodes live in flat arrays addressed by 32-bit indices (no pointers, no per-node allocation), and
 // children are always appended after their parent, so a forward sweep over the indices visits
 // parents before children (push) and a backward sweep children before parents (pull).
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <span>
@@ -97,5 +98,9 @@ private:
 
 /// Polygon geometry (normal, centroid, area) from corners, without depending on the mesher.
 PatchPolygon makeElementPolygon(std::span<const glm::dvec3> corners);
+
+/// The four children of a triangle (midpoint split) or quad (bilinear split), in the parent's plane
+/// and winding: what ElementTree::subdivide creates.
+std::array<PatchPolygon, 4> splitElementPolygon(const PatchPolygon& parent);
 
 } // namespace radiant

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/ElementTree.h"
 #include "radiometry/mesh/PatchMesh.h"
 
 namespace radiant::hierarchical {
@@ -58,6 +59,50 @@ inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n,
         sum += gamma * glm::dot(n, c) / length;
     }
     return std::max(0.0, sum / (2 * std::numbers::pi));
+}
+
+/// The centroids of the four children the element would split into: a 4-point rule over it whose
+/// points are exactly where its children will evaluate.
+inline std::array<glm::dvec3, 4> childCentroids(const PatchPolygon& p) {
+    const auto& v = p.vertices;
+    if (p.count == 4) {
+        const auto at = [&](double u, double w) {
+            return (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
+        };
+        return {at(0.25, 0.25), at(0.75, 0.25), at(0.75, 0.75), at(0.25, 0.75)};
+    }
+    return {(4.0 * v[0] + v[1] + v[2]) / 6.0, (v[0] + 4.0 * v[1] + v[2]) / 6.0, (v[0] + v[1] + 4.0 * v[2]) / 6.0,
+            (v[0] + v[1] + v[2]) / 3.0};
+}
+
+/// The receiver's mean of the exact kernel to `source`, F(receiver -> source) unoccluded, by a 3 x 3
+/// Gauss-Legendre rule over the receiver (bilinear map on a quad, the collapsed Duffy map on a
+/// triangle, each weighted by its Jacobian). For elements sharing an edge, where the kernel changes
+/// like x log x, it is within 3e-5 of the catalog's 0.200044 for unit squares; the 2 x 2 midpoint
+/// rule is 1% low there.
+inline double gaussMeanKernel(const PatchPolygon& receiver, const PatchPolygon& source) {
+    static constexpr std::array<double, 3> node{0.1127016653792583, 0.5, 0.8872983346207417};
+    static constexpr std::array<double, 3> weight{5.0 / 18, 8.0 / 18, 5.0 / 18};
+    const auto& v = receiver.vertices;
+    double sum = 0, weights = 0;
+    for (std::size_t i = 0; i < 3; ++i)
+        for (std::size_t k = 0; k < 3; ++k) {
+            const double u = node[i], w = node[k];
+            glm::dvec3 x, du, dw;
+            if (receiver.count == 4) {
+                x = (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
+                du = (1 - w) * (v[1] - v[0]) + w * (v[2] - v[3]);
+                dw = (1 - u) * (v[3] - v[0]) + u * (v[2] - v[1]);
+            } else {
+                x = v[0] + u * (v[1] - v[0]) + u * w * (v[2] - v[1]);
+                du = (v[1] - v[0]) + w * (v[2] - v[1]);
+                dw = u * (v[2] - v[1]);
+            }
+            const double jacobian = weight[i] * weight[k] * glm::length(glm::cross(du, dw));
+            sum += jacobian * pointToElementFormFactor(x, receiver.normal, source);
+            weights += jacobian;
+        }
+    return weights > 0 ? sum / weights : 0;
 }
 
 /// True when some of each element lies strictly in front of the other: otherwise no light passes.

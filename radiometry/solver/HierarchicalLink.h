@@ -13,8 +13,8 @@ struct Link {
     ElementIndex source = kNoElement;
     /// F(receiver -> source) with visibility: H_receiver += formFactor * B_source.
     float formFactor = 0;
-    /// The unoccluded form factor weighted by how uncertain the visibility is: what the refinement
-    /// oracle multiplies by radiosity and area (partially visible links count in full).
+    /// How uncertain formFactor is across the receiver (the kernel's spread over it, or the whole
+    /// form factor when partially visible): what the refinement oracle multiplies by B and area.
     float errorFormFactor = 0;
 };
 static_assert(sizeof(Link) == 16);

@@ -54,7 +54,7 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     splitsPerThread_.resize(threads_);
     linksPerThread_.resize(threads_);
     gatherPerThread_.resize(threads_);
-    linkRoots(progress);
+    linkRoots(progress);  // sorted afterwards: the order does not depend on scheduling
     setLeavesToEmission();
     mapSolution();
 }
@@ -90,25 +90,43 @@ void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
     if (!hierarchical::facing(p, q)) return;
-    // The exact kernel at the receiver's centroid: exact over the source, a midpoint rule over the
-    // receiver whose error shrinks as refinement splits the receiver.
-    const double f = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q);
-    double bound = f;
+    // The exact kernel (exact over the source) at the centroids of the receiver's four children: their
+    // mean is the link's form factor, their spread how much the receiver's irradiance from this source
+    // varies across it, which is the error of pushing one value down to all of it.
+    // The centroid joins the spread (not the mean): four symmetric points alone would miss a
+    // source centred over the receiver.
+    const double atCentroid = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q);
+    double sum = 0, lowest = atCentroid, highest = atCentroid;
+    for (const glm::dvec3& x : hierarchical::childCentroids(p)) {
+        const double f = hierarchical::pointToElementFormFactor(x, p.normal, q);
+        sum += f;
+        lowest = std::min(lowest, f);
+        highest = std::max(highest, f);
+    }
+    double f = 0.25 * sum;
+    const double spread = highest - lowest;
+    // Close for their size (e.g. sharing an edge): the 4-point rule is biased there; refine it.
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    if (f > 0 && glm::dot(p.centroid - q.centroid, p.centroid - q.centroid) < 2.25 * reach * reach)
+        f = hierarchical::gaussMeanKernel(p, q);
     if (f <= 0) {
-        // The centroid is behind the source's plane but part of the receiver is not: the link
-        // carries nothing yet, and refinement finds the part that does see the source.
+        // No sample point is in front of the source, yet part of the receiver is: the link carries
+        // nothing yet, and refinement finds the part that does see the source.
+        double bound = 0;
         for (const glm::dvec3& corner : p.corners())
             bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
                                                                            p.normal, q));
-        if (bound <= 0) return;
+        if (bound > 0) out.push_back({receiver, source, 0.0f, static_cast<float>(bound)});
+        return;
     }
     const double visible =
         caster_ ? hierarchical::elementVisibility(p, q, *caster_, visibilityRays_,
                                                   pairSeed(options_.seed, receiver, source))
                 : 1.0;
-    const bool partial = visible > 0 && visible < 1;
-    out.push_back({receiver, source, static_cast<float>(f * visible),
-                   static_cast<float>(bound * (partial ? 1.0 : kUniformVisibilityWeight))});
+    // Partly visible: the visible share may vary across the receiver by the whole form factor.
+    // Fully hidden: only a gap the rays missed could carry light.
+    const double uncertainty = visible <= 0 ? kHiddenErrorWeight * spread : visible < 1 ? std::max(f, spread) : spread;
+    out.push_back({receiver, source, static_cast<float>(f * visible), static_cast<float>(uncertainty)});
 }
 
 double HierarchicalSolver::emittedPower() const {
@@ -179,28 +197,33 @@ std::size_t HierarchicalSolver::refine() {
             }
         }
 
-        // 3. Replace each split link by its four children (in parallel: form factors and rays).
-        for (auto& buffer : linksPerThread_) buffer.clear();
+        // 3. Replace each split link by its four children (in parallel: form factors and rays). Each
+        //    split owns four slots, so the links land in the same order whatever the scheduling.
+        produced_.assign(ElementTree::kChildCount * splits.size(), Link{});
         parallelChunks(splits.size(), threads_, 64, [&](std::size_t from, std::size_t to, unsigned thread) {
+            std::vector<Link>& scratch = linksPerThread_[thread];
             for (std::size_t i = from; i < to; ++i) {
+                scratch.clear();
                 const Link& link = links_[splits[i].link];
                 if (splits[i].splitReceiver) {
                     const ElementIndex first = tree_.firstChild(link.receiver);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        makeLink(c, link.source, linksPerThread_[thread]);
+                        makeLink(c, link.source, scratch);
                 } else {
                     const ElementIndex first = tree_.firstChild(link.source);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        makeLink(link.receiver, c, linksPerThread_[thread]);
+                        makeLink(link.receiver, c, scratch);
                 }
+                std::copy(scratch.begin(), scratch.end(), produced_.begin() + ElementTree::kChildCount * i);
             }
         });
         for (const Split& split : splits) links_[split.link].receiver = kNoElement;
         begin = links_.size();
-        for (const auto& buffer : linksPerThread_) {
-            links_.insert(links_.end(), buffer.begin(), buffer.end());
-            created += buffer.size();
-        }
+        for (const Link& link : produced_)
+            if (link.receiver != kNoElement) {
+                links_.push_back(link);
+                ++created;
+            }
     }
     if (created > 0 || !splits.empty())
         std::erase_if(links_, [](const Link& link) { return link.receiver == kNoElement; });
@@ -210,15 +233,19 @@ std::size_t HierarchicalSolver::refine() {
 
 void HierarchicalSolver::gather() {
     const std::size_t n = tree_.size();
+    // One contiguous block of links per accumulator (not per thread): the sums come out bit for bit
+    // the same however the blocks are scheduled.
+    const std::size_t block = (links_.size() + threads_ - 1) / threads_;
     for (auto& buffer : gatherPerThread_) buffer.assign(n, Rgb(0.0));
     const auto& radiosity = tree_.radiosity();
-    parallelChunks(links_.size(), threads_, 1 << 16, [&](std::size_t from, std::size_t to, unsigned thread) {
-        Rgb* gathered = gatherPerThread_[thread].data();
-        for (std::size_t i = from; i < to; ++i) {
-            const Link& link = links_[i];
-            gathered[link.receiver] += static_cast<double>(link.formFactor) * radiosity[link.source];
-        }
-    });
+    parallelChunks(links_.size(), threads_, std::max<std::size_t>(block, 1),
+                   [&](std::size_t from, std::size_t to, unsigned) {
+                       Rgb* gathered = gatherPerThread_[from / std::max<std::size_t>(block, 1)].data();
+                       for (std::size_t i = from; i < to; ++i) {
+                           const Link& link = links_[i];
+                           gathered[link.receiver] += static_cast<double>(link.formFactor) * radiosity[link.source];
+                       }
+                   });
     auto& own = tree_.gatheredIrradiance();
     std::swap(own, gatherPerThread_[0]);  // the old array becomes next step's scratch space
     for (std::size_t t = 1; t < gatherPerThread_.size(); ++t)
@@ -319,6 +346,7 @@ std::size_t HierarchicalSolver::bytes() const {
     std::size_t perThread = 0;
     for (const auto& b : splitsPerThread_) perThread += b.capacity() * sizeof(Split);
     for (const auto& b : linksPerThread_) perThread += b.capacity() * sizeof(Link);
+    perThread += produced_.capacity() * sizeof(Link);
     for (const auto& b : gatherPerThread_) perThread += b.capacity() * sizeof(Rgb);
     return tree_.bytes() + links_.capacity() * sizeof(Link) + pushedIrradiance_.capacity() * sizeof(Rgb) +
            importance_.capacity() * sizeof(double) + patchElement_.capacity() * sizeof(ElementIndex) +

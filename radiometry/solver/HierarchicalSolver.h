@@ -4,9 +4,11 @@
 //
 // Every face is the root of a quadtree of elements. Links join pairs of elements; a link is
 // refined (its larger element split, the link replaced by four finer ones) while its "BF" error
-// estimate rho_p B_q F_pq A_p exceeds linkEpsilon times the emitted power, until elements reach
-// minElementArea. The estimate counts a partially visible link (a few rays disagree) four times as
-// much as a fully visible or fully hidden one, so shadow boundaries get the finest elements.
+// estimate rho_p B_q dF_pq A_p exceeds linkEpsilon times the emitted power, until elements reach
+// minElementArea. dF is the form factor's uncertainty: the spread of the exact point-to-polygon
+// kernel over the receiver (the error of giving the whole receiver one value), or the whole form
+// factor when a few rays find the link partially visible, so shadow boundaries refine further
+// than fully visible or fully hidden links.
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
 // cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
 // pulled up as the area-weighted mean of the children.
@@ -51,8 +53,8 @@ public:
     /// Visibility rays per new link (stratified): few, because the oracle only needs to know
     /// whether a link is fully visible, fully hidden or partial.
     static constexpr int kLinkVisibilityRays = 4;
-    /// How much a link of uniform visibility counts in the oracle, relative to a partial one.
-    static constexpr double kUniformVisibilityWeight = 0.25;
+    /// How much a link that every ray found blocked counts in the oracle, relative to a visible one.
+    static constexpr double kHiddenErrorWeight = 0.25;
 
 protected:
     /// Called after `parent` was split (serially, between parallel phases).
@@ -116,6 +118,7 @@ private:
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
     std::vector<std::vector<Link>> linksPerThread_;
+    std::vector<Link> produced_;
     std::vector<std::vector<Rgb>> gatherPerThread_;
     std::vector<Rgb> pushedIrradiance_;
     std::size_t visibilityTests_ = 0;

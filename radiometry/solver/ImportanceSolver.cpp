@@ -119,8 +119,10 @@ void ImportanceSolver::afterGather() {
     gatherPerThread_.resize(threads());
     for (auto& buffer : gatherPerThread_) buffer.assign(n, 0.0);
     const auto links = this->links();
-    parallelChunks(links.size(), threads(), 1 << 16, [&](std::size_t from, std::size_t to, unsigned thread) {
-        double* gathered = gatherPerThread_[thread].data();
+    // One block per accumulator, as in the radiosity gather: deterministic sums.
+    const std::size_t block = std::max<std::size_t>((links.size() + threads() - 1) / threads(), 1);
+    parallelChunks(links.size(), threads(), block, [&](std::size_t from, std::size_t to, unsigned) {
+        double* gathered = gatherPerThread_[from / block].data();
         for (std::size_t i = from; i < to; ++i)
             gathered[links[i].receiver] += static_cast<double>(links[i].formFactor) * sourceImportance_[links[i].source];
     });
