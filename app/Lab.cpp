@@ -6,6 +6,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
 
@@ -16,9 +18,11 @@
 #include "app/window/CameraController.h"
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
-#include "radiometry/scene/BuiltinScenes.h"
+#include "app/panels/ScenePanel.h"
+#include "radiometry/scene/SceneLibrary.h"
 #include "render/FlatSceneRenderer.h"
 #include "render/OffscreenRender.h"
+#include "render/WireframeRenderer.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -28,9 +32,16 @@ namespace {
 // stay visible where they meet the background.
 const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
 
-Scene openScene(const std::string& name) {
-    if (name == "cornell-box") return makeCornellBox();
-    throw RadiantError({name, ""}, "unknown scene; this build opens only the built-in 'cornell-box'");
+constexpr double kDefaultMaxPatchArea = 0.01;  // m^2: 100 cm^2, a few hundred patches in the Cornell box
+
+Scene openScene(const std::string& nameOrPath) {
+    LoadedScene loaded = loadScene(nameOrPath);
+    for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+    return std::move(loaded.scene);
+}
+
+std::string windowTitle(const Scene& scene) {
+    return "Radiant - " + std::filesystem::path(scene.name).filename().string();
 }
 
 void sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi) {
@@ -58,7 +69,7 @@ render::OrbitCamera homeCamera(const Scene& scene) {
 struct Lab::State {
     explicit State(const LabOptions& options)
         : scene(openScene(options.scene)),
-          window({options.width, options.height, "Radiant - " + scene.name, options.visible, options.vsync}),
+          window({options.width, options.height, windowTitle(scene), options.visible, options.vsync}),
           gl(render::queryGlInfo()),
           orbit(homeCamera(scene)),
           panelsVisible(options.showPanels) {
@@ -70,14 +81,36 @@ struct Lab::State {
             if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
             self->onKey(key);
         });
+        glfwSetDropCallback(window.handle(), [](GLFWwindow* w, int count, const char** paths) {
+            auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
+            if (count > 0 && self->scenePanel) self->scenePanel->open(paths[0]);  // one scene at a time
+        });
         ui.emplace(window.handle(), options.uiScale);
         renderer = std::make_unique<render::FlatSceneRenderer>(scene);
+        auto panel = std::make_unique<ScenePanel>(
+            [this](const Scene& loaded, const PatchMesh& mesh) { install(loaded, mesh); }, scene,
+            kDefaultMaxPatchArea);
+        scenePanel = panel.get();
+        sidebar.add(std::move(panel));
         sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote(), *ui));
     }
 
     ~State() {
+        wireframe.reset();
         renderer.reset();  // GL objects die while their context is alive
         ui.reset();
+    }
+
+    /// A new scene or a new mesh of this one, from the Scene panel's worker.
+    void install(const Scene& loaded, const PatchMesh& mesh) {
+        const bool sameScene = loaded.name == scene.name;
+        scene = loaded;
+        renderer = std::make_unique<render::FlatSceneRenderer>(scene);
+        wireframe = std::make_unique<render::WireframeRenderer>(mesh);
+        if (!sameScene) {
+            orbit = homeCamera(scene);
+            window.setTitle(windowTitle(scene));
+        }
     }
 
     void onKey(int key) {
@@ -92,6 +125,7 @@ struct Lab::State {
         lastFrameTime = now;
 
         glfwPollEvents();
+        sidebar.update();
         ui->newFrame();
         int width = 0, height = 0;
         window.framebufferSize(width, height);
@@ -108,6 +142,7 @@ struct Lab::State {
         lastCamera = orbit.camera();
         render::beginWindowFrame(width, height, viewport, kBackground);
         renderer->draw(lastCamera, viewport.aspect());
+        if (wireframe && scenePanel->showWireframe()) wireframe->draw(lastCamera, viewport.aspect());
         render::useWholeWindow(width, height);
         ui->render();
         if (capture) *capture = render::readWindowPixels(width, height);
@@ -121,6 +156,8 @@ struct Lab::State {
     bool panelsVisible;
     std::optional<ImGuiLayer> ui;
     std::unique_ptr<render::SceneRenderer> renderer;
+    std::unique_ptr<render::WireframeRenderer> wireframe;
+    ScenePanel* scenePanel = nullptr;  // owned by the sidebar
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;

@@ -45,9 +45,13 @@ void FlatSceneRenderer::draw(const Camera& camera, double aspect) const {
     const glm::dvec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
     const glm::dvec3 up = glm::cross(right, camera.forward);
     gl_->program.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
+    // Pushed back by their depth slope so overlays (patch edges) drawn at the same depth stay on top.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
     gl_->layout.bind();
     glDrawArrays(GL_TRIANGLES, 0, gl_->vertexCount);
     glBindVertexArray(0);
+    glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
 } // namespace radiant::render

@@ -54,7 +54,7 @@ void InfoPanel::draw() {
     control("Left drag", "orbit");
     control("Right/middle drag", "pan");
     control("Wheel", "zoom");
-    control("C", "Cornell camera");
+    control("C", "home view");
     control("H", "hide/show panels");
     control("Esc", "quit");
 }

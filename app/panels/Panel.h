@@ -8,6 +8,8 @@ public:
     virtual ~Panel() = default;
     [[nodiscard]] virtual const char* title() const = 0;
     [[nodiscard]] virtual bool openByDefault() const { return true; }
+    /// Called once every frame, shown or not, before drawing (poll background work here).
+    virtual void update() {}
     /// Called inside the sidebar window, between the panel's header and the next one.
     virtual void draw() = 0;
 };

@@ -12,6 +12,10 @@ namespace radiant::app {
 class Sidebar {
 public:
     void add(std::unique_ptr<Panel> panel) { panels_.push_back(std::move(panel)); }
+    /// Lets every panel poll its background work; call each frame, whether the sidebar shows or not.
+    void update() {
+        for (const auto& panel : panels_) panel->update();
+    }
     /// Draws the sidebar; returns its width in ImGui (window) coordinates.
     float draw(const std::string& heading, const std::string& subheading);
 

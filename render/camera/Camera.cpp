@@ -30,6 +30,8 @@ Camera cornellCamera() {
 
 Camera framingCamera(const glm::dvec3& lo, const glm::dvec3& hi) {
     Camera camera = cornellCamera();
+    // A three-quarter view from above: a head-on view of a box shows one flat square.
+    camera.forward = glm::normalize(glm::dvec3(-0.55, -0.45, 1.0));
     const glm::dvec3 centre = (lo + hi) / 2.0;
     const double radius = std::max(glm::length(hi - lo) / 2.0, 1e-3);
     const double distance = radius / std::sin(camera.fieldOfView.value() / 2.0);

@@ -39,7 +39,7 @@ struct Camera {
 /// along +z, up +y, a 35 mm lens on 25 mm film: field of view 2 atan(12.5 / 35).
 Camera cornellCamera();
 
-/// A camera looking along +z (up +y) from in front of the box [lo, hi], far enough that its
+/// A camera looking three-quarters down onto the box [lo, hi] (mostly along +z, up +y), far enough that its
 /// bounding sphere fits the field of view: the home view of scenes without a published camera.
 Camera framingCamera(const glm::dvec3& lo, const glm::dvec3& hi);
 
