@@ -1,0 +1,86 @@
+#include "render/ColourScale.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace radiant::render {
+
+double acesFitted(double x) {
+    x = std::max(x, 0.0);
+    return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0);
+}
+
+double linearToSrgb(double linear) {
+    const double c = std::clamp(linear, 0.0, 1.0);
+    return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
+}
+
+glm::dvec3 toneMap(const glm::dvec3& radiosityW_m2, double exposureScale) {
+    const glm::dvec3 x = radiosityW_m2 * exposureScale;
+    return {linearToSrgb(acesFitted(x.x)), linearToSrgb(acesFitted(x.y)), linearToSrgb(acesFitted(x.z))};
+}
+
+glm::dvec3 viridis(double t) {
+    // matplotlib's viridis at t = 0, 1/8, ..., 1, sRGB-encoded bytes.
+    static constexpr std::array<std::array<double, 3>, 9> table{{{68, 1, 84},
+                                                                 {71, 45, 123},
+                                                                 {59, 82, 139},
+                                                                 {44, 114, 142},
+                                                                 {33, 145, 140},
+                                                                 {40, 174, 128},
+                                                                 {94, 201, 98},
+                                                                 {173, 220, 48},
+                                                                 {253, 231, 37}}};
+    const double s = std::clamp(t, 0.0, 1.0) * 8.0;
+    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(s), 7);
+    const double f = s - static_cast<double>(i);
+    const glm::dvec3 a(table[i][0], table[i][1], table[i][2]);
+    const glm::dvec3 b(table[i + 1][0], table[i + 1][1], table[i + 1][2]);
+    return (a + (b - a) * f) / 255.0;
+}
+
+double ColourLegend::position(double valueW_m2) const {
+    double t = 0;
+    if (logScale) {
+        const double lo = std::log10(minW_m2), hi = std::log10(maxW_m2);
+        t = valueW_m2 > 0 ? (std::log10(valueW_m2) - lo) / (hi - lo) : 0.0;
+    } else {
+        t = (valueW_m2 - minW_m2) / (maxW_m2 - minW_m2);
+    }
+    return std::clamp(t, 0.0, 1.0);
+}
+
+namespace {
+
+/// The smallest of 1, 2, 5 x 10^k that is at least `value`.
+double niceStepAtLeast(double value) {
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (const double m : {1.0, 2.0, 5.0, 10.0})
+        if (m * decade >= value * (1 - 1e-9)) return m * decade;
+    return 10.0 * decade;
+}
+
+} // namespace
+
+ColourLegend makeLegend(double maxW_m2, bool logScale, int decades) {
+    ColourLegend legend;
+    legend.logScale = logScale;
+    legend.maxW_m2 = maxW_m2 > 0 && std::isfinite(maxW_m2) ? maxW_m2 : 1.0;
+    if (logScale) {
+        legend.minW_m2 = legend.maxW_m2 * std::pow(10.0, -std::max(decades, 1));
+        // Every power of ten inside the range (both ends included when they land on one).
+        for (double p = std::pow(10.0, std::ceil(std::log10(legend.minW_m2) - 1e-9)); p <= legend.maxW_m2 * (1 + 1e-9);
+             p *= 10.0)
+            legend.ticksW_m2.push_back(p);
+    } else {
+        legend.minW_m2 = 0;
+        // Four to ten ticks at a 1-2-5 step.
+        const double step = niceStepAtLeast(legend.maxW_m2 / 8.0);
+        for (int k = 0; static_cast<double>(k) * step <= legend.maxW_m2 * (1 + 1e-9); ++k)
+            legend.ticksW_m2.push_back(static_cast<double>(k) * step);
+    }
+    return legend;
+}
+
+} // namespace radiant::render

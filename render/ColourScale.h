@@ -1,0 +1,39 @@
+#pragma once
+// The numbers behind the pictures, GL-free so tests and the Display panel's legend use exactly what
+// the shaders do: the ACES-fitted tone curve, sRGB encoding, the viridis colour map, and the
+// W/m^2 range false colour maps with its legend ticks. shaders/patch.frag.glsl mirrors these.
+#include <glm/vec3.hpp>
+#include <vector>
+
+namespace radiant::render {
+
+/// Luminance weights of linear Rec. 709 / sRGB primaries.
+inline constexpr glm::dvec3 kLuminanceWeights{0.2126, 0.7152, 0.0722};
+
+/// Narkowicz's fit of the ACES filmic curve (2015): x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14),
+/// clamped to [0, 1]; applied per channel to linear values.
+double acesFitted(double x);
+/// The sRGB transfer function (IEC 61966-2-1) from linear [0, 1] to encoded [0, 1].
+double linearToSrgb(double linear);
+/// Linear radiosity (W/m^2) times `exposureScale` (1/(W/m^2)) -> sRGB-encoded display colour in [0, 1].
+glm::dvec3 toneMap(const glm::dvec3& radiosityW_m2, double exposureScale);
+
+/// Viridis (van der Walt and Smith, matplotlib 2015) at t in [0, 1], clamped; linear interpolation
+/// of a 9-entry table of sRGB-encoded colours. The shader holds the same table.
+glm::dvec3 viridis(double t);
+
+/// What false colour maps: [minW_m2, maxW_m2] to [0, 1] of the colour map, linearly or on log10.
+struct ColourLegend {
+    double minW_m2 = 0;
+    double maxW_m2 = 1;
+    bool logScale = false;
+    std::vector<double> ticksW_m2;  ///< round values inside the range, for labels and isolines
+
+    /// Position of a value on the colour map, in [0, 1] (clamped).
+    [[nodiscard]] double position(double valueW_m2) const;
+};
+
+/// A linear legend from 0 to maxW_m2, or a log legend over `decades` decades below it, with round ticks.
+ColourLegend makeLegend(double maxW_m2, bool logScale, int decades);
+
+} // namespace radiant::render

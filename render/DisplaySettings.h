@@ -1,0 +1,40 @@
+#pragma once
+// How radiosity is shown: the knobs of the Display panel, read by PatchRenderer::draw. Plain values,
+// GL-free, owned by the lab and edited in place by the panel.
+namespace radiant::render {
+
+enum class Shading {
+    Smooth,  ///< Gouraud: per-vertex radiosity = area-weighted mean of the surface's adjacent patches
+    Flat,    ///< each patch shows its own radiosity: the solver's unknowns as they are
+};
+
+enum class ColourMode {
+    ToneMapped,   ///< exposure, ACES-fitted tone curve, sRGB-encoded: what an eye would see
+    FalseColour,  ///< luminance in W/m^2 through the viridis colour map, with a legend
+};
+
+struct DisplaySettings {
+    /// Exposure in stops relative to the automatic key (the mean radiosity of the lit, non-emitting
+    /// patches shown as a middle tone); +1 doubles the light.
+    float exposureStops = 0.0f;
+    Shading shading = Shading::Smooth;
+    ColourMode colourMode = ColourMode::ToneMapped;
+    /// False colour on a log10 scale spanning kLogDecades decades below the maximum.
+    bool logScale = false;
+    /// W/m^2 mapped to the top of the colour map; 0 = automatic (the largest non-emitter radiosity).
+    float falseColourMaxW_m2 = 0.0f;
+    /// Contour lines at each tick of the legend (false colour only).
+    bool isolines = false;
+    bool wireframe = false;
+    /// Step mode: outline the last shooting patch, and tint the patches whose radiosity changed in
+    /// the last update.
+    bool highlightShooter = true;
+    bool showLinks = false;       ///< hierarchical links as line segments
+    bool showImportance = false;  ///< per-patch importance as a magenta tint
+    /// ImGui text and spacing scale (projectors want 1.5-2); the lab applies it to its ImGuiLayer.
+    float uiScale = 1.0f;
+
+    static constexpr int kLogDecades = 3;
+};
+
+} // namespace radiant::render
