@@ -7,8 +7,6 @@
 
 namespace radiant::render {
 
-/// Luminance weights of linear Rec. 709 / sRGB primaries.
-inline constexpr glm::dvec3 kLuminanceWeights{0.2126, 0.7152, 0.0722};
 
 /// Narkowicz's fit of the ACES filmic curve (2015): x(2.51x + 0.03) / (x(2.43x + 0.59) + 0.14),
 /// clamped to [0, 1]; applied per channel to linear values.

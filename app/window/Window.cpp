@@ -5,6 +5,8 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <utility>
+#include <vector>
 
 #include "radiometry/common/Error.h"
 
@@ -41,8 +43,12 @@ Window::Window(const WindowOptions& options) {
                                                (display ? "'" + std::string(display) + "'" : "not set") +
                                                " - the lab needs a display (use xvfb-run without one)");
     }
-    // Multisampling first for clean edges on a projector; without it if the visual does not exist.
-    constexpr ContextRequest requests[] = {{4, 5, 4}, {4, 5, 0}, {3, 3, 4}, {3, 3, 0}};
+    // Multisampling first when asked for; without it if the visual does not exist.
+    std::vector<ContextRequest> requests;
+    for (const auto& [major, minor] : {std::pair{4, 5}, std::pair{3, 3}}) {
+        if (options.msaaSamples > 0) requests.push_back({major, minor, options.msaaSamples});
+        requests.push_back({major, minor, 0});
+    }
     std::string firstError;
     for (const ContextRequest& request : requests) {
         window_ = tryCreate(options, request);

@@ -13,6 +13,10 @@ struct WindowOptions {
     std::string title = "Radiant";
     bool visible = true;
     bool vsync = true;
+    /// Multisample anti-aliasing samples; 0 = off, the default: on llvmpipe (software GL, what Xvfb
+    /// and CI give) 4x MSAA multiplies the fragment cost and frames took 70-270 ms, and the patch
+    /// shader already draws its edges anti-aliased (fwidth), so MSAA buys little for what it costs.
+    int msaaSamples = 0;
 };
 
 class Window {

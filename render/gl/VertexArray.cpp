@@ -32,4 +32,13 @@ void VertexArray::addFloatAttribute(const Buffer& buffer, GLuint location, GLint
                           reinterpret_cast<const void*>(offsetBytes));  // NOLINT
 }
 
+void VertexArray::addIntAttribute(const Buffer& buffer, GLuint location, std::size_t strideBytes,
+                                  std::size_t offsetBytes) {
+    glBindVertexArray(id_);
+    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    glEnableVertexAttribArray(location);
+    glVertexAttribIPointer(location, 1, GL_INT, static_cast<GLsizei>(strideBytes),
+                           reinterpret_cast<const void*>(offsetBytes));  // NOLINT
+}
+
 } // namespace radiant::render::gl

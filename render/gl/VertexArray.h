@@ -24,6 +24,8 @@ public:
     /// at `offsetBytes` within each `strideBytes` record.
     void addFloatAttribute(const Buffer& buffer, GLuint location, GLint components, std::size_t strideBytes,
                            std::size_t offsetBytes);
+    /// As addFloatAttribute for one 32-bit signed integer per vertex, read as an `int` shader input.
+    void addIntAttribute(const Buffer& buffer, GLuint location, std::size_t strideBytes, std::size_t offsetBytes);
 
 private:
     GLuint id_ = 0;

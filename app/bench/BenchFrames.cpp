@@ -1,0 +1,166 @@
+// Frame time of the lab's 3D view with its UI, on the Cornell box at about 20k patches in a
+// 1600 x 1000 window (vsync off): with the solver idle and with a SolverThread stepping progressive
+// refinement (gathering would need a 20k x 20k form-factor matrix). Medians and 99th percentiles.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <thread>
+
+#include "app/bench/BenchTable.h"
+#include "app/panels/DisplayPanel.h"
+#include "app/solver/SolverThread.h"
+#include "app/ui/ImGuiLayer.h"
+#include "app/window/Window.h"
+#include "radiometry/scene/SceneLibrary.h"
+#include "render/GlContext.h"
+#include "render/PatchRenderer.h"
+#include "render/camera/HomeCamera.h"
+
+namespace radiant::app {
+namespace {
+
+constexpr std::size_t kTargetPatches = 20'000;
+constexpr int kWidth = 1600;
+constexpr int kHeight = 1000;
+const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
+
+double percentile(std::vector<double> samples, double p) {
+    std::sort(samples.begin(), samples.end());
+    const auto i = static_cast<std::size_t>(std::ceil(p * static_cast<double>(samples.size()))) - 1;
+    return samples[std::min(i, samples.size() - 1)];
+}
+
+/// The patch area that meshes the scene into about `target` patches (meshing makes patches near the
+/// limit, so the count scales as area / limit; two corrections absorb the rounding to whole cells).
+double areaForPatchCount(const Scene& scene, std::size_t target) {
+    double area = scene.totalArea() / static_cast<double>(target);
+    for (int i = 0; i < 2; ++i)
+        area *= static_cast<double>(estimatePatchCount(scene, {area})) / static_cast<double>(target);
+    return area;
+}
+
+/// A minimal lab: the patch renderer fed from the solver thread's snapshots, and the sidebar's
+/// Display panel, drawn every frame as the lab does.
+class FrameLoop {
+public:
+    explicit FrameLoop(SolverThread& solver)
+        : solver_(solver), window_({kWidth, kHeight, "radiant bench", true, false}), ui_(window_.handle(), 1.0f),
+          panel_(settings_, [this] { return renderer_.legend(); }) {}
+
+    /// Draws `count` frames; returns each frame's wall time in seconds (end of one swap to the next).
+    std::vector<double> run(int count, std::size_t* uploads = nullptr) {
+        std::vector<double> seconds;
+        const std::uint64_t uploadsBefore = renderer_.radiosityUploads();
+        auto last = std::chrono::steady_clock::now();
+        for (int i = 0; i < count; ++i) {
+            frame();
+            const auto now = std::chrono::steady_clock::now();
+            seconds.push_back(std::chrono::duration<double>(now - last).count());
+            last = now;
+        }
+        if (uploads) *uploads = renderer_.radiosityUploads() - uploadsBefore;
+        return seconds;
+    }
+
+    void frame() {
+        glfwPollEvents();
+        const std::shared_ptr<const Snapshot> snapshot = solver_.snapshot();
+        if (snapshot->mesh && snapshot->scene) {
+            renderer_.setMesh(*snapshot->scene, *snapshot->mesh, snapshot->meshGeneration);
+            renderer_.setRadiosity(snapshot->radiosity, snapshot->generation, snapshot->stats.shooter);
+            if (!haveCamera_) {
+                camera_ = render::homeCamera(*snapshot->scene);
+                haveCamera_ = true;
+            }
+        }
+        ui_.newFrame();
+        const float sidebar = 360.0f;
+        ImGui::SetNextWindowPos(ImVec2(0, 0));
+        ImGui::SetNextWindowSize(ImVec2(sidebar, static_cast<float>(kHeight)));
+        ImGui::Begin("Radiant", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize);
+        if (ImGui::CollapsingHeader("Display", ImGuiTreeNodeFlags_DefaultOpen)) panel_.draw();
+        ImGui::End();
+        settings_.colourMode = render::ColourMode::ToneMapped;
+        renderer_.setSettings(settings_);
+        int width = 0, height = 0;
+        window_.framebufferSize(width, height);
+        const int sidebarPixels = static_cast<int>(sidebar * window_.pixelRatio());
+        const render::Viewport view{sidebarPixels, 0, std::max(1, width - sidebarPixels), std::max(1, height)};
+        render::beginWindowFrame(width, height, view, kBackground);
+        renderer_.draw(camera_, view.aspect());
+        render::useWholeWindow(width, height);
+        ui_.render();
+        window_.swapBuffers();
+    }
+
+    [[nodiscard]] std::string glRenderer() const { return render::queryGlInfo().renderer; }
+
+private:
+    SolverThread& solver_;
+    Window window_;
+    ImGuiLayer ui_;
+    render::DisplaySettings settings_;
+    render::PatchRenderer renderer_;
+    DisplayPanel panel_;
+    render::Camera camera_ = render::cornellCamera();
+    bool haveCamera_ = false;
+};
+
+std::string ms(double seconds) { return formatNumber(seconds * 1e3); }
+
+} // namespace
+
+BenchTable benchFrames(const BenchOptions& options) {
+    BenchTable table;
+    table.title = "Frames: Cornell box at ~20k patches, 1600 x 1000 window, vsync off";
+    table.columns = {"solver", "frames", "median (ms)", "p99 (ms)", "radiosity uploads", "solver steps"};
+    const char* display = std::getenv("DISPLAY");
+    if (display == nullptr || *display == '\0') {
+        table.notes.push_back("skipped: no display (run under xvfb-run -a -s \"-screen 0 1600x1000x24\")");
+        return table;
+    }
+    const int frames = options.quick ? 60 : 300;
+
+    auto scene = std::make_shared<const Scene>(loadScene("cornell-box").scene);
+    MeshingOptions meshing;
+    meshing.maxPatchArea = areaForPatchCount(*scene, kTargetPatches);
+
+    SolverThread solver;
+    solver.send(command::SetTolerance{1e-12});  // keep stepping for the whole measurement
+    solver.send(command::LoadScene{scene, meshing});
+    solver.send(command::SetMethod{SolverMethod::Progressive});
+    solver.send(command::Step{8});  // a solution to show while idle
+    solver.waitUntilIdle();
+    FrameLoop loop(solver);
+    loop.run(frames / 10);  // warm-up: first uploads, shader compilation, font atlas
+
+    std::size_t idleUploads = 0, runningUploads = 0;
+    const std::size_t stepsBefore = solver.snapshot()->stats.iteration;
+    const std::vector<double> idle = loop.run(frames, &idleUploads);
+    solver.send(command::Run{});
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the worker is stepping
+    const std::size_t runningFrom = solver.snapshot()->stats.iteration;
+    const std::vector<double> running = loop.run(frames, &runningUploads);
+    const std::size_t stepsRunning = solver.snapshot()->stats.iteration - runningFrom;
+    solver.send(command::Pause{});
+    const std::size_t patches = solver.snapshot()->mesh ? solver.snapshot()->mesh->size() : 0;
+
+    table.rows.push_back({"idle", std::to_string(idle.size()), ms(median(idle)), ms(percentile(idle, 0.99)),
+                          std::to_string(idleUploads), std::to_string(runningFrom - stepsBefore)});
+    table.rows.push_back({"progressive running", std::to_string(running.size()), ms(median(running)),
+                          ms(percentile(running, 0.99)), std::to_string(runningUploads), std::to_string(stepsRunning)});
+    table.notes.push_back(std::to_string(patches) + " patches (max patch area " +
+                          formatNumber(meshing.maxPatchArea * 1e4) + " cm^2); GL renderer: " + loop.glRenderer());
+    table.notes.push_back("running / idle: median " + formatNumber(median(running) / median(idle)) + "x, p99 " +
+                          formatNumber(percentile(running, 0.99) / percentile(idle, 0.99)) +
+                          "x (target: running p99 < 33 ms and within 1.5x of idle)");
+    return table;
+}
+
+} // namespace radiant::app

@@ -1,0 +1,136 @@
+#include "app/panels/DisplayPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace radiant::app {
+namespace {
+
+constexpr const char* kUnit = "W/m\xC2\xB2";  // UTF-8 superscript two: the UI font has it
+
+ImU32 colourU32(const glm::dvec3& srgb) {
+    return ImGui::GetColorU32(ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y),
+                                     static_cast<float>(srgb.z), 1.0f));
+}
+
+/// "0.25", "12", "1.5k": short enough to sit under a tick.
+void formatTick(char* out, std::size_t size, double value) {
+    if (value == 0) std::snprintf(out, size, "0");
+    else if (value >= 1e4) std::snprintf(out, size, "%gk", value / 1e3);
+    else std::snprintf(out, size, "%g", value);
+}
+
+void help(const char* text) {
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
+}
+
+} // namespace
+
+void DisplayPanel::draw() {
+    render::DisplaySettings& s = settings_;
+    const float labelRoom = ImGui::GetFontSize() * 7.0f;
+
+    ImGui::SetNextItemWidth(-labelRoom);
+    ImGui::SliderFloat("Exposure", &s.exposureStops, -8.0f, 8.0f, "%+.1f stops");
+    help("Relative to the automatic key (the mean radiosity of lit, non-emitting patches).\n"
+         "Each stop doubles the light. Double-click to type; right-click resets.");
+    if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) s.exposureStops = 0.0f;
+
+    int shading = s.shading == render::Shading::Smooth ? 0 : 1;
+    ImGui::TextUnformatted("Shading");
+    ImGui::SameLine(labelRoom * 0.7f);
+    ImGui::RadioButton("smooth", &shading, 0);
+    help("Gouraud: each vertex shows the area-weighted mean of its patches on the surface.");
+    ImGui::SameLine();
+    ImGui::RadioButton("flat", &shading, 1);
+    help("Each patch shows its own radiosity: the solver's unknowns as they are.");
+    s.shading = shading == 0 ? render::Shading::Smooth : render::Shading::Flat;
+
+    bool falseColour = s.colourMode == render::ColourMode::FalseColour;
+    ImGui::Checkbox("False colour", &falseColour);
+    help("Total radiosity B_r + B_g + B_b in W/m\xC2\xB2 through the viridis colour map.");
+    s.colourMode = falseColour ? render::ColourMode::FalseColour : render::ColourMode::ToneMapped;
+    if (falseColour) {
+        ImGui::Indent();
+        ImGui::Checkbox("Log scale", &s.logScale);
+        ImGui::SameLine();
+        ImGui::Checkbox("Isolines", &s.isolines);
+        help("A contour at every tick of the legend.");
+        if (ImGui::Checkbox("Manual range", &manualRange_) && manualRange_ && s.falseColourMaxW_m2 <= 0)
+            s.falseColourMaxW_m2 = static_cast<float>(legend_ ? legend_().maxW_m2 : 1.0);
+        if (manualRange_) {
+            ImGui::SetNextItemWidth(-labelRoom);
+            ImGui::DragFloat("Max", &s.falseColourMaxW_m2, std::max(s.falseColourMaxW_m2 * 0.01f, 1e-4f), 1e-4f, 1e7f,
+                             "%.4g W/m\xC2\xB2", ImGuiSliderFlags_Logarithmic);
+            s.falseColourMaxW_m2 = std::max(s.falseColourMaxW_m2, 1e-4f);
+        } else {
+            s.falseColourMaxW_m2 = 0.0f;
+        }
+        ImGui::Unindent();
+        if (legend_) drawLegend(legend_());
+    }
+
+    ImGui::Spacing();
+    ImGui::TextDisabled("Overlays");
+    ImGui::Checkbox("Wireframe", &s.wireframe);
+    ImGui::SameLine(labelRoom);
+    ImGui::Checkbox("Shooter", &s.highlightShooter);
+    help("Outline the patch shot in the last step and tint the patches it changed.");
+    ImGui::Checkbox("Links", &s.showLinks);
+    help("Hierarchical radiosity's links between elements.");
+    ImGui::SameLine(labelRoom);
+    ImGui::Checkbox("Importance", &s.showImportance);
+    help("Importance-driven radiosity's per-patch importance, relative to its maximum (magenta).");
+
+    ImGui::Spacing();
+    if (!editingScale_) scaleSlider_ = s.uiScale;
+    ImGui::SetNextItemWidth(-labelRoom);
+    // Applied when the slider is let go: rebuilding the font atlas under the cursor makes it jump.
+    ImGui::SliderFloat("UI scale", &scaleSlider_, 0.75f, 2.5f, "%.2fx");
+    help("Larger text and spacing for a projector.");
+    editingScale_ = ImGui::IsItemActive();
+    if (ImGui::IsItemDeactivatedAfterEdit()) s.uiScale = scaleSlider_;
+}
+
+void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    const float font = ImGui::GetFontSize();
+    const ImVec2 origin = ImGui::GetCursorScreenPos();
+    const float margin = font * 0.9f;  // half a label either side, so end labels stay in the panel
+    const float width = std::max(ImGui::GetContentRegionAvail().x - 2.0f * margin, font * 4.0f);
+    const float barHeight = font * 0.9f;
+    const ImVec2 barLo(origin.x + margin, origin.y + font * 0.2f);
+    const ImVec2 barHi(barLo.x + width, barLo.y + barHeight);
+
+    // The colour map as many narrow linear pieces: viridis is smooth enough that 32 are exact to the eye.
+    constexpr int kPieces = 32;
+    for (int i = 0; i < kPieces; ++i) {
+        const double t0 = i / static_cast<double>(kPieces), t1 = (i + 1) / static_cast<double>(kPieces);
+        const float x0 = barLo.x + width * static_cast<float>(t0), x1 = barLo.x + width * static_cast<float>(t1);
+        const ImU32 left = colourU32(render::viridis(t0)), right = colourU32(render::viridis(t1));
+        draw->AddRectFilledMultiColor(ImVec2(x0, barLo.y), ImVec2(x1 + 0.5f, barHi.y), left, right, right, left);
+    }
+    draw->AddRect(barLo, barHi, ImGui::GetColorU32(ImGuiCol_Border));
+
+    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
+    float lastLabelEnd = -1e9f;
+    for (const double tick : legend.ticksW_m2) {
+        const float x = barLo.x + width * static_cast<float>(legend.position(tick));
+        draw->AddLine(ImVec2(x, barHi.y), ImVec2(x, barHi.y + font * 0.3f), text);
+        char label[32];
+        formatTick(label, sizeof label, tick);
+        const float labelWidth = ImGui::CalcTextSize(label).x;
+        const float left = x - labelWidth / 2;
+        if (left < lastLabelEnd + font * 0.3f) continue;  // crowded: keep the tick, drop its number
+        draw->AddText(ImVec2(left, barHi.y + font * 0.35f), text, label);
+        lastLabelEnd = left + labelWidth;
+    }
+    ImGui::Dummy(ImVec2(width + 2 * margin, barHeight + font * 1.6f));
+    ImGui::TextDisabled("%s, %s, %s", kUnit, legend.logScale ? "log scale" : "linear",
+                        settings_.falseColourMaxW_m2 > 0 ? "manual max" : "automatic max");
+}
+
+} // namespace radiant::app

@@ -1,0 +1,271 @@
+// The patch renderer drawn offscreen on a hand-built field: one unit square cut into a row of
+// patches whose radiosity rises left to right as B_k = c k^2 (grey). Expected pixels come from the
+// documented formulas written out here (ACES fit, sRGB curve, viridis end colours, Gouraud as the
+// area-weighted vertex mean interpolated linearly), never from the renderer's own helpers.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <memory>
+#include <vector>
+
+#include "app/window/Window.h"
+#include "radiometry/common/Error.h"
+#include "render/ColourScale.h"
+#include "render/OffscreenRender.h"
+#include "render/PatchRenderer.h"
+
+using namespace radiant;
+using render::ImageRgb8;
+
+namespace {
+
+constexpr int kPatches = 5;
+constexpr int kWidth = 480;
+constexpr int kHeight = 360;
+constexpr double kStep = 4.0;  // W/m^2: B_k = kStep k^2
+
+void requireDisplay() {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display != nullptr && *display != '\0'),
+                    "no DISPLAY: the GL tests need an X server; run them as "
+                    "xvfb-run -a -s \"-screen 0 1600x1000x24\" radiant_gl_tests");
+}
+
+double radiosityOf(int k) { return kStep * k * k; }
+
+/// One grey surface, the unit square in z = 0 facing +z, cut into kPatches columns.
+struct Field {
+    Scene scene;
+    PatchMesh mesh;
+    std::vector<Rgb> radiosity;
+
+    Field() {
+        scene.name = "test field";
+        scene.materials.push_back({"grey", Rgb(0.5), ExitanceRgb{}});
+        Face face{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, 1}, 1.0};
+        scene.surfaces.push_back({"square", 0, {face}, "test"});
+        for (int i = 0; i <= kPatches; ++i) {
+            mesh.vertices.emplace_back(static_cast<double>(i) / kPatches, 0.0, 0.0);
+            mesh.vertices.emplace_back(static_cast<double>(i) / kPatches, 1.0, 0.0);
+        }
+        for (std::uint32_t k = 0; k < kPatches; ++k) {
+            Patch patch;
+            patch.corners = {2 * k, 2 * k + 2, 2 * k + 3, 2 * k + 1};
+            patch.cornerCount = 4;
+            patch.area = 1.0 / kPatches;
+            patch.centroid = {(k + 0.5) / kPatches, 0.5, 0.0};
+            mesh.patches.push_back(patch);
+            radiosity.emplace_back(radiosityOf(static_cast<int>(k)));
+        }
+        mesh.surfaceFirstPatch = {0, kPatches};
+    }
+};
+
+render::Camera frontCamera() {
+    render::Camera camera;
+    camera.eye = {0.5, 0.5, 1.5};
+    camera.forward = {0, 0, -1};
+    camera.up = {0, 1, 0};
+    return camera;
+}
+
+/// Pixel position of a point of the square.
+glm::dvec2 pixelOf(double x, double y) {
+    const glm::dvec3 p = render::projectToPixel(frontCamera(), {0, 0, kWidth, kHeight}, {x, y, 0.0});
+    return {p.x, p.y};
+}
+
+glm::dvec3 pixelAt(const ImageRgb8& image, double x, double y) {
+    const glm::dvec2 p = pixelOf(x, y);
+    const glm::u8vec3 c = image.at(static_cast<int>(p.x), static_cast<int>(p.y));
+    return glm::dvec3(c);
+}
+
+// The documented display formulas, independently written.
+double aces(double x) { return std::clamp(x * (2.51 * x + 0.03) / (x * (2.43 * x + 0.59) + 0.14), 0.0, 1.0); }
+double srgb(double c) { return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1 / 2.4) - 0.055; }
+double toneMapped255(double radiosity, double exposureScale) { return 255.0 * srgb(aces(radiosity * exposureScale)); }
+
+/// Exposure 0 puts the area-weighted mean luminance of the lit patches at tone-curve input 0.5.
+double expectedExposureScale(double stops) {
+    double sum = 0;
+    int lit = 0;
+    for (int k = 0; k < kPatches; ++k)
+        if (radiosityOf(k) > 0) {
+            sum += radiosityOf(k);
+            ++lit;
+        }
+    return std::exp2(stops) * 0.5 / (sum / lit);
+}
+
+/// Gouraud oracle: vertex values are the mean of the (equal-area) adjacent patches; along x the
+/// value is linear between the patch's left and right edge values.
+double smoothRadiosityAt(double x) {
+    const int k = std::min(static_cast<int>(x * kPatches), kPatches - 1);
+    const double left = k == 0 ? radiosityOf(0) : (radiosityOf(k - 1) + radiosityOf(k)) / 2;
+    const double right = k == kPatches - 1 ? radiosityOf(k) : (radiosityOf(k) + radiosityOf(k + 1)) / 2;
+    const double f = x * kPatches - k;
+    return left + (right - left) * f;
+}
+
+struct Rig {
+    app::Window window{{64, 64, "patch renderer test", false, false}};
+    std::unique_ptr<render::PatchRenderer> renderer = std::make_unique<render::PatchRenderer>();
+    Field field;
+
+    Rig() {
+        renderer->setMesh(field.scene, field.mesh, 1);
+        renderer->setRadiosity(field.radiosity, 1, -1);
+    }
+    ~Rig() { renderer.reset(); }  // GL objects die while the context lives
+
+    ImageRgb8 draw(const render::DisplaySettings& settings) {
+        renderer->setSettings(settings);
+        return render::renderOffscreen(*renderer, frontCamera(), kWidth, kHeight, {0, 0, 0});
+    }
+};
+
+render::DisplaySettings plain() {
+    render::DisplaySettings settings;
+    settings.highlightShooter = false;
+    return settings;
+}
+
+} // namespace
+
+TEST_SUITE("gl display") {
+
+TEST_CASE("flat tone-mapped patches show the ACES-fitted, sRGB-encoded radiosity and rise left to right") {
+    requireDisplay();
+    Rig rig;
+    for (const float stops : {0.0f, -1.5f, 2.0f}) {
+        render::DisplaySettings settings = plain();
+        settings.shading = render::Shading::Flat;
+        settings.exposureStops = stops;
+        const ImageRgb8 image = rig.draw(settings);
+        const double scale = expectedExposureScale(stops);
+        double previous = -1;
+        for (int k = 0; k < kPatches; ++k) {
+            const double x = (k + 0.5) / kPatches;
+            const glm::dvec3 pixel = pixelAt(image, x, 0.5);
+            const double expected = toneMapped255(radiosityOf(k), scale);
+            INFO("stops ", stops, ", patch ", k, ": B = ", radiosityOf(k), " W/m^2, expected ", expected, ", got (",
+                 pixel.x, ", ", pixel.y, ", ", pixel.z, ")");
+            CHECK(std::abs(pixel.x - expected) <= 2.0);
+            CHECK(std::abs(pixel.y - expected) <= 2.0);
+            CHECK(std::abs(pixel.z - expected) <= 2.0);
+            CHECK(pixel.y > previous);  // brighter where B is larger
+            previous = pixel.y;
+        }
+    }
+}
+
+TEST_CASE("smooth shading interpolates the area-weighted vertex means; flat shading jumps at patch edges") {
+    requireDisplay();
+    Rig rig;
+    render::DisplaySettings settings = plain();
+    settings.exposureStops = -2.0f;  // keep the brightest patch off the tone curve's shoulder
+    const double scale = expectedExposureScale(-2.0);
+    settings.shading = render::Shading::Smooth;
+    const ImageRgb8 smooth = rig.draw(settings);
+    settings.shading = render::Shading::Flat;
+    const ImageRgb8 flat = rig.draw(settings);
+
+    for (const double x : {0.1, 0.3, 0.45, 0.5, 0.7, 0.77, 0.9}) {
+        const double expected = toneMapped255(smoothRadiosityAt(x), scale);
+        const double got = pixelAt(smooth, x, 0.37).y;
+        INFO("x = ", x, ": smooth B = ", smoothRadiosityAt(x), " W/m^2, expected ", expected, ", got ", got);
+        CHECK(std::abs(got - expected) <= 3.0);
+    }
+    // Either side of the edge between patches 2 and 3 (x = 0.6): a step in flat, continuous in smooth.
+    const double flatJump = pixelAt(flat, 0.61, 0.5).y - pixelAt(flat, 0.59, 0.5).y;
+    const double smoothJump = pixelAt(smooth, 0.61, 0.5).y - pixelAt(smooth, 0.59, 0.5).y;
+    const double expectedFlatJump = toneMapped255(radiosityOf(3), scale) - toneMapped255(radiosityOf(2), scale);
+    CHECK(flatJump == doctest::Approx(expectedFlatJump).epsilon(0.1));
+    CHECK(std::abs(smoothJump) < 0.25 * flatJump);
+}
+
+TEST_CASE("false colour maps zero to viridis' first colour and the range maximum to its last") {
+    requireDisplay();
+    Rig rig;
+    render::DisplaySettings settings = plain();
+    settings.shading = render::Shading::Flat;
+    settings.colourMode = render::ColourMode::FalseColour;
+    settings.falseColourMaxW_m2 = static_cast<float>(3 * radiosityOf(kPatches - 1));  // total over bands
+    for (const bool log : {false, true}) {
+        settings.logScale = log;
+        const ImageRgb8 image = rig.draw(settings);
+        const glm::dvec3 top = pixelAt(image, (kPatches - 0.5) / kPatches, 0.5);
+        const glm::dvec3 bottom = pixelAt(image, 0.5 / kPatches, 0.5);
+        INFO("log ", log, ": top (", top.x, ", ", top.y, ", ", top.z, "), bottom (", bottom.x, ", ", bottom.y, ", ",
+             bottom.z, ")");
+        CHECK(glm::all(glm::lessThanEqual(glm::abs(top - glm::dvec3(253, 231, 37)), glm::dvec3(2.0))));
+        CHECK(glm::all(glm::lessThanEqual(glm::abs(bottom - glm::dvec3(68, 1, 84)), glm::dvec3(2.0))));
+    }
+    // Half the maximum on a linear scale: between viridis 4/8 (33, 145, 140) and 5/8 at t = 0.5 exactly 4/8.
+    settings.logScale = false;
+    settings.falseColourMaxW_m2 = static_cast<float>(2 * 3 * radiosityOf(2));
+    const glm::dvec3 middle = pixelAt(rig.draw(settings), 2.5 / kPatches, 0.5);
+    CHECK(glm::all(glm::lessThanEqual(glm::abs(middle - glm::dvec3(33, 145, 140)), glm::dvec3(2.0))));
+}
+
+TEST_CASE("radiosity is uploaded only when its generation changes, and a wrong size is refused") {
+    requireDisplay();
+    Rig rig;
+    CHECK(rig.renderer->radiosityUploads() == 1);
+    rig.renderer->setRadiosity(rig.field.radiosity, 1, -1);
+    CHECK(rig.renderer->radiosityUploads() == 1);
+    rig.renderer->setRadiosity(rig.field.radiosity, 2, 3);
+    CHECK(rig.renderer->radiosityUploads() == 2);
+    rig.renderer->setMesh(rig.field.scene, rig.field.mesh, 1);  // same mesh generation: kept
+    CHECK(rig.renderer->hasRadiosity());
+    const std::vector<Rgb> tooShort(kPatches - 1, Rgb(1.0));
+    CHECK_THROWS_AS(rig.renderer->setRadiosity(tooShort, 3, -1), RadiantError);
+}
+
+TEST_CASE("the shooter's outline and the wireframe darken or colour patch edges only") {
+    requireDisplay();
+    Rig rig;
+    rig.renderer->setRadiosity(rig.field.radiosity, 2, 2);
+    render::DisplaySettings settings = plain();
+    settings.shading = render::Shading::Flat;
+    const ImageRgb8 bare = rig.draw(settings);
+    settings.wireframe = true;
+    const ImageRgb8 wired = rig.draw(settings);
+    // On the edge x = 0.4 the wireframe darkens; inside the patch (and on the quad's hidden diagonal,
+    // which passes through the centre) it does not.
+    const glm::dvec2 edge = pixelOf(0.4, 0.5);
+    const double edgeBare = glm::dvec3(bare.at(static_cast<int>(edge.x), static_cast<int>(edge.y))).y;
+    const double edgeWired = glm::dvec3(wired.at(static_cast<int>(edge.x), static_cast<int>(edge.y))).y;
+    CHECK(edgeWired < edgeBare - 10);
+    CHECK(pixelAt(wired, 0.5, 0.5).y == doctest::Approx(pixelAt(bare, 0.5, 0.5).y).epsilon(0.02));
+
+    settings.wireframe = false;
+    settings.highlightShooter = true;
+    const ImageRgb8 highlighted = rig.draw(settings);
+    const glm::dvec3 shooter = pixelAt(highlighted, 0.5, 0.5), plainShooter = pixelAt(bare, 0.5, 0.5);
+    CHECK(shooter.x > shooter.z + 20);  // tinted orange
+    CHECK(pixelAt(highlighted, 0.9, 0.5) == pixelAt(bare, 0.9, 0.5));  // unchanged patch, not the shooter
+    CHECK(plainShooter.x == doctest::Approx(plainShooter.z).epsilon(0.02));  // grey before
+}
+
+TEST_CASE("legend: linear ticks on a 1-2-5 step from zero, log ticks at each power of ten") {
+    const render::ColourLegend linear = render::makeLegend(37.0, false, 3);
+    CHECK(linear.minW_m2 == 0.0);
+    REQUIRE(linear.ticksW_m2.size() >= 4);
+    CHECK(linear.ticksW_m2.front() == 0.0);
+    CHECK(linear.ticksW_m2[1] == doctest::Approx(5.0));
+    CHECK(linear.ticksW_m2.back() <= 37.0);
+    CHECK(linear.position(37.0 / 4) == doctest::Approx(0.25));
+
+    const render::ColourLegend log = render::makeLegend(250.0, true, 3);
+    CHECK(log.minW_m2 == doctest::Approx(0.25));
+    REQUIRE(log.ticksW_m2.size() == 3);
+    CHECK(log.ticksW_m2[0] == doctest::Approx(1.0));
+    CHECK(log.ticksW_m2[2] == doctest::Approx(100.0));
+    CHECK(log.position(std::sqrt(0.25 * 250.0)) == doctest::Approx(0.5));
+}
+
+}  // TEST_SUITE
