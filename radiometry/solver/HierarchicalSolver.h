@@ -125,9 +125,9 @@ private:
     IterationStats stats_;
 };
 
-/// Options under which the hierarchical solver refines `scene` to roughly `elements` elements:
-/// a minimum element area of a fraction of the scene's area per element and a link epsilon small
-/// enough that elements near it are reached where light arrives. Calibrated on the Cornell box.
+/// Options under which the hierarchical solver refines `scene` to roughly `elements` elements
+/// (within about 20% on the Cornell box, on which the link epsilon's power law was measured; other
+/// scenes differ): for benches that compare methods at equal element counts.
 SolverOptions hierarchicalOptionsForElements(const Scene& scene, std::size_t elements, SolverOptions base = {});
 
 } // namespace radiant
