@@ -29,7 +29,7 @@ namespace {
 
 struct SolveOptions {
     std::string scene;
-    std::string method = "progressive";
+    std::string method = "gauss-seidel";
     double maxPatchArea = MeshingOptions{}.maxPatchArea;
     double tolerance = 1e-3;
     std::size_t maxIterations = 100000;
