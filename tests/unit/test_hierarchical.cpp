@@ -15,6 +15,7 @@
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ImportanceSolver.h"
+#include "radiometry/solver/Solver.h"
 
 using namespace radiant;
 
@@ -350,6 +351,40 @@ TEST_CASE("hierarchical: setMaterial keeps the links and resumes to the fresh an
         CHECK_THROWS_AS(resumed->setMaterial(5, Rgb(0.5), ExitanceRgb{}), RadiantError);
         CHECK_THROWS_AS(resumed->setMaterial(0, Rgb(1.0), ExitanceRgb{}), RadiantError);
     }
+}
+
+TEST_CASE("hierarchical: the meshed Cornell box shows each patch the leaves under it") {
+    const Scene scene = makeCornellBox();
+    MeshingOptions meshing;
+    meshing.maxPatchArea = 0.01;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    SolverOptions options;
+    options.linkEpsilon = 1e-4;
+    Progress progress;
+    auto solver = makeSolver(SolverMethod::Hierarchical, scene, mesh, options, &progress);
+    CHECK(progress.done == progress.total);
+    CHECK(solve(*solver, 1e-3, 100) < 100);
+    const auto& solution = solver->solution();
+    REQUIRE(solution.size() == mesh.size());
+    const auto& hierarchical = dynamic_cast<const HierarchicalSolver&>(*solver);
+    const ElementTree& tree = hierarchical.elements();
+    for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
+        CAPTURE(scene.surfaces[s].name);
+        // The patches' area-weighted mean is the leaves' (both tile the surface).
+        Rgb patchSum(0.0), leafSum(0.0);
+        for (std::uint32_t i = mesh.surfaceFirstPatch[s]; i < mesh.surfaceFirstPatch[s + 1]; ++i) {
+            CHECK(solution[i].x > 0);
+            patchSum += mesh.patches[i].area * solution[i];
+        }
+        for (const ElementIndex e : tree.leaves())
+            if (tree.surface(e) == s) leafSum += tree.area(e) * tree.radiosity()[e];
+        CHECK(patchSum.x == doctest::Approx(leafSum.x).epsilon(0.03));
+    }
+    solver->reset();
+    CHECK(solver->lastStats().iteration == 0);
+    const std::size_t light = scene.findSurface("light");
+    for (std::size_t i = 0; i < mesh.size(); ++i)
+        CHECK(solution[i].x == (mesh.patches[i].surface == light ? 17.0 : 0.0));
 }
 
 TEST_CASE("importance: zero where the camera cannot see, positive in view") {
