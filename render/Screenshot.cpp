@@ -12,7 +12,8 @@
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
 #pragma GCC diagnostic ignored "-Wshadow"
 #pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <stb_image_write.h>
+// Through its folder: render/ does not get the stb pkg-config include path (imgui brings it to app/ only).
+#include <stb/stb_image_write.h>
 #pragma GCC diagnostic pop
 
 namespace radiant::render {
