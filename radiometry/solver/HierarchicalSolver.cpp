@@ -125,8 +125,10 @@ void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
                 : 1.0;
     // Partly visible: the visible share may vary across the receiver by the whole form factor.
     // Fully hidden: only a gap the rays missed could carry light.
-    const double uncertainty = visible <= 0 ? kHiddenErrorWeight * spread : visible < 1 ? std::max(f, spread) : spread;
-    out.push_back({receiver, source, static_cast<float>(f * visible), static_cast<float>(uncertainty)});
+    const bool partial = visible > 0 && visible < 1;
+    const double uncertainty = partial ? std::max(f, spread) : visible <= 0 ? kHiddenErrorWeight * spread : spread;
+    out.push_back({receiver, source, static_cast<float>(f * visible),
+                   static_cast<float>(partial ? -uncertainty : uncertainty)});
 }
 
 double HierarchicalSolver::emittedPower() const {
@@ -143,7 +145,7 @@ double HierarchicalSolver::meanReflectance(ElementIndex e) const {
 double HierarchicalSolver::refinementThreshold() const { return options_.linkEpsilon * emittedPower(); }
 
 double HierarchicalSolver::linkError(const Link& link) const {
-    const double geometric = static_cast<double>(link.errorFormFactor) * tree_.area(link.receiver);
+    const double geometric = link.uncertainty() * tree_.area(link.receiver);
     if (geometric <= 0) return 0;
     const Rgb& rhoP = surfaceReflectance_[tree_.surface(link.receiver)];
     const auto& radiosity = tree_.radiosity();
@@ -174,13 +176,15 @@ std::size_t HierarchicalSolver::refine() {
             for (std::size_t i = begin + from; i < begin + to; ++i) {
                 const Link& link = links_[i];
                 if (linkError(link) <= threshold) continue;
+                // The kernel is exact over the source, so splitting a source only helps where its
+                // radiosity varies (it has children) or where visibility varies across it; else
+                // it would just share one error among more links. Otherwise split the larger.
+                const bool sourceHelps = (link.partiallyVisible() || !tree_.isLeaf(link.source)) && canSplit(link.source);
                 const bool receiverLarger = tree_.area(link.receiver) >= tree_.area(link.source);
-                const ElementIndex larger = receiverLarger ? link.receiver : link.source;
-                const ElementIndex smaller = receiverLarger ? link.source : link.receiver;
-                if (canSplit(larger))
-                    splitsPerThread_[thread].push_back({i, receiverLarger});
-                else if (canSplit(smaller))
-                    splitsPerThread_[thread].push_back({i, !receiverLarger});
+                if (canSplit(link.receiver) && (receiverLarger || !sourceHelps))
+                    splitsPerThread_[thread].push_back({i, true});
+                else if (sourceHelps)
+                    splitsPerThread_[thread].push_back({i, false});
             }
         });
         splits.clear();
