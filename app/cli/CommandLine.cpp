@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <memory>
 #include <string>
 
 #include "app/LabApp.h"
@@ -10,30 +11,39 @@
 
 namespace radiant::app {
 
-int runCommandLine(int argc, char** argv) {
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     CLI::App root{"Radiant: an interactive lab for radiometry and radiosity", "radiant"};
     root.require_subcommand(0, 1);
-    std::string scene = "cornell-box";
-    root.add_option("scene", scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
+    auto scene = std::make_shared<std::string>("cornell-box");
+    root.add_option("scene", *scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
 
     const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addRenderCommand(root),
                                    addBenchCommand(root)};
     try {
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
-        return root.exit(e);
+        return {{}, root.exit(e)};
     } catch (const CLI::CallForAllHelp& e) {
-        return root.exit(e);
+        return {{}, root.exit(e)};
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "radiant: %s (see radiant --help)\n", e.what());
-        return 2;
+        return {{}, 2};
     }
+    for (const Subcommand& command : commands)
+        if (command.app->parsed()) return {command.run, 0};
+    return {[scene] {
+                LabOptions options;
+                options.scene = *scene;
+                return runLab(options);
+            },
+            0};
+}
+
+int runCommandLine(int argc, char** argv) {
+    const ParsedCommandLine parsed = parseCommandLine(argc, argv);
+    if (!parsed.action) return parsed.exitStatus;
     try {
-        for (const Subcommand& command : commands)
-            if (command.app->parsed()) return command.run();
-        LabOptions options;
-        options.scene = scene;
-        return runLab(options);
+        return parsed.action();
     } catch (const RadiantError& e) {
         std::fprintf(stderr, "radiant: %s\n", e.what());
         return 2;

@@ -14,6 +14,15 @@ int runCommandLine(int argc, char** argv);
 
 /// Each subcommand lives in its own file and registers its options and its action here.
 using CommandAction = std::function<int()>;
+
+/// The command line parsed and not yet acted on, so the parser can be tested (and fuzzed) without
+/// opening windows or solving scenes. The action owns the parsed values it needs.
+struct ParsedCommandLine {
+    CommandAction action;  ///< the chosen subcommand, or the lab; empty when parsing ended the run
+    int exitStatus = 0;    ///< when there is no action: 0 after --help, 2 after bad arguments
+};
+/// Parses argv (prints help or the one-line error itself); never runs a command.
+ParsedCommandLine parseCommandLine(int argc, const char* const* argv);
 struct Subcommand {
     CLI::App* app = nullptr;
     CommandAction run;

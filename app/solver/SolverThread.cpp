@@ -1,6 +1,7 @@
 #include "app/solver/SolverThread.h"
 
 #include <chrono>
+#include <cmath>
 #include <optional>
 #include <type_traits>
 
@@ -52,6 +53,13 @@ std::vector<Rgb> emittedRadiosity(const Scene& scene, const PatchMesh& mesh) {
         b[i] = scene.materials[surface.material].exitance.value();
     }
     return b;
+}
+
+/// Index of the first patch whose radiosity is NaN or infinite, or npos.
+std::size_t firstNonFinite(const std::vector<Rgb>& radiosity) {
+    for (std::size_t i = 0; i < radiosity.size(); ++i)
+        if (!std::isfinite(radiosity[i].x) || !std::isfinite(radiosity[i].y) || !std::isfinite(radiosity[i].z)) return i;
+    return std::string::npos;
 }
 } // namespace
 
@@ -240,6 +248,20 @@ void SolverThread::publish(State& state) {
         s->radiosity = state.solver->solution();
     else if (state.scene && state.mesh)
         s->radiosity = emittedRadiosity(*state.scene, *state.mesh);
+    // NaN or infinity must never reach the display (a diverging solve, a corrupt material): keep the
+    // last finite picture of this mesh, show the error and stop stepping.
+    if (const std::size_t bad = firstNonFinite(s->radiosity); bad != std::string::npos) {
+        const Rgb& b = s->radiosity[bad];
+        state.error = "the solution is no longer finite (patch " + std::to_string(bad) + ": " + std::to_string(b.x) + ", " +
+                      std::to_string(b.y) + ", " + std::to_string(b.z) + " W/m^2); stopped: reset, or change the material or method";
+        state.running = false;
+        state.pendingSteps = 0;
+        const std::shared_ptr<const Snapshot> previous = published_.load();
+        if (previous->mesh == s->mesh && firstNonFinite(previous->radiosity) == std::string::npos)
+            s->radiosity = previous->radiosity;
+        else
+            s->radiosity.clear();  // "no solution yet" to the display
+    }
     s->method = state.method;
     if (state.solver) s->stats = state.solver->lastStats();
     s->history = state.history;

@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 
@@ -43,6 +44,25 @@ bool isBinaryGltf(const std::string& path) {
     return in.gcount() == 4 && magic[0] == 'g' && magic[1] == 'l' && magic[2] == 'T' && magic[3] == 'F';
 }
 
+bool hasBinaryMagic(std::span<const unsigned char> bytes) {
+    return bytes.size() >= 4 && bytes[0] == 'g' && bytes[1] == 'l' && bytes[2] == 'T' && bytes[3] == 'F';
+}
+
+/// File-system callbacks for bytes from memory: every external URI is refused, so loading
+/// untrusted bytes (a fuzzer's, a network's) never reads or probes other files.
+tinygltf::FsCallbacks noFileSystem() {
+    tinygltf::FsCallbacks callbacks{};
+    callbacks.FileExists = [](const std::string&, void*) { return false; };
+    callbacks.ExpandFilePath = [](const std::string& path, void*) { return path; };
+    callbacks.ReadWholeFile = [](std::vector<unsigned char>*, std::string* error, const std::string& path, void*) {
+        if (error) *error += "external file '" + path + "' refused: only self-contained glTF loads from memory";
+        return false;
+    };
+    callbacks.WriteWholeFile = [](std::string*, const std::string&, const std::vector<unsigned char>&, void*) { return false; };
+    callbacks.user_data = nullptr;
+    return callbacks;
+}
+
 glm::dmat4 localTransform(const tinygltf::Node& node) {
     if (node.matrix.size() == 16) return glm::make_mat4(node.matrix.data());  // column-major, as glTF
     glm::dmat4 m(1.0);
@@ -61,6 +81,8 @@ struct Instance {
 class Loader {
 public:
     Loader(const std::string& path, const SceneLoadOptions& options) : path_(path), options_(options) {}
+    Loader(std::span<const unsigned char> bytes, const std::string& name, const SceneLoadOptions& options)
+        : path_(name), options_(options), memory_(bytes), fromMemory_(true) {}
 
     LoadedScene run() {
         readModel();
@@ -77,12 +99,28 @@ public:
 
 private:
     void readModel() {
+        if (fromMemory_) return readModelFromMemory();
         std::error_code ec;
         if (!std::filesystem::is_regular_file(path_, ec)) throw RadiantError({path_, ""}, "no such file");
         tinygltf::TinyGLTF reader;
         std::string error, warning;
         const bool ok = isBinaryGltf(path_) ? reader.LoadBinaryFromFile(&model_, &error, &warning, path_)
                                             : reader.LoadASCIIFromFile(&model_, &error, &warning, path_);
+        if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
+        if (!warning.empty()) result_.warnings.push_back(path_ + ": " + oneLine(warning));
+    }
+
+    void readModelFromMemory() {
+        if (memory_.empty()) throw RadiantError({path_, ""}, "is empty, not a glTF file");
+        if (memory_.size() > std::numeric_limits<unsigned int>::max())
+            throw BudgetError({path_, ""}, "is " + describe(static_cast<double>(memory_.size())) + " bytes; glTF from memory is limited to 4 GiB");
+        const auto length = static_cast<unsigned int>(memory_.size());
+        tinygltf::TinyGLTF reader;
+        reader.SetFsCallbacks(noFileSystem());
+        std::string error, warning;
+        const bool ok = hasBinaryMagic(memory_)
+                            ? reader.LoadBinaryFromMemory(&model_, &error, &warning, memory_.data(), length, "")
+                            : reader.LoadASCIIFromString(&model_, &error, &warning, reinterpret_cast<const char*>(memory_.data()), length, "");
         if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
         if (!warning.empty()) result_.warnings.push_back(path_ + ": " + oneLine(warning));
     }
@@ -222,6 +260,8 @@ private:
 
     std::string path_;
     SceneLoadOptions options_;
+    std::span<const unsigned char> memory_;
+    bool fromMemory_ = false;
     tinygltf::Model model_;
     LoadedScene result_;
     std::map<int, std::size_t> materialOf_;
@@ -233,5 +273,9 @@ private:
 } // namespace
 
 LoadedScene loadGltf(const std::string& path, const SceneLoadOptions& options) { return Loader(path, options).run(); }
+
+LoadedScene loadGltfFromMemory(std::span<const unsigned char> bytes, const std::string& name, const SceneLoadOptions& options) {
+    return Loader(bytes, name, options).run();
+}
 
 } // namespace radiant

@@ -16,6 +16,7 @@
 // Bad input throws RadiantError with one line naming the file and the element; recoverable
 // oddities (zero-area triangles, points and lines, reflectance >= 1 clamped to 0.999) are warnings.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -34,5 +35,12 @@ struct LoadedScene {
 
 /// Loads a .gltf or .glb file. Scene::name is the path as given.
 LoadedScene loadGltf(const std::string& path, const SceneLoadOptions& options = {});
+
+/// Loads a .gltf (JSON text) or .glb (recognised by its "glTF" magic) held in memory, with every
+/// check loadGltf makes; `name` stands for the file in errors and becomes Scene::name. Only
+/// self-contained files load: external buffer or image URIs are refused (data: URIs and the .glb
+/// binary chunk work), so untrusted bytes never open other files.
+LoadedScene loadGltfFromMemory(std::span<const unsigned char> bytes, const std::string& name,
+                               const SceneLoadOptions& options = {});
 
 } // namespace radiant

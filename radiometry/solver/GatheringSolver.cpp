@@ -8,6 +8,7 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/ParallelFor.h"
 
 namespace radiant {
@@ -70,6 +71,7 @@ Rgb GatheringSolver::residualPower() {
 
 std::shared_ptr<const FormFactorMatrix> computeFormFactorMatrix(const Scene& scene, const PatchMesh& mesh,
                                                                 const SolverOptions& options, Progress* progress) {
+    checkFormFactorMatrixBudget(mesh.size(), options.matrixBudgetBytes);  // before any allocation
     const RayCaster rays(scene);
     FormFactorOptions formFactors = options.formFactors;
     formFactors.seed = pairSeed(options.seed, options.formFactors.seed, 0);

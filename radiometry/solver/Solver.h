@@ -43,6 +43,8 @@ struct SolverOptions {
     /// Importance: the camera whose view drives refinement (position, target, up, vertical fov in radians).
     glm::dvec3 eye{0.278, 0.273, -0.8}, target{0.278, 0.273, 0.0}, up{0, 1, 0};
     double verticalFov = 0.6911;       ///< 2 atan(12.5 / 35): the Cornell camera
+    /// Gathering: refuse (BudgetError, before allocating) a form-factor matrix that may need more bytes.
+    double matrixBudgetBytes = 4e9;
 };
 
 class Solver {
