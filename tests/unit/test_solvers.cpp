@@ -282,7 +282,7 @@ TEST_CASE("a closed box with uniform reflectance balances emitted and absorbed p
     }
 }
 
-TEST_CASE("gathering residuals follow their definition; the shooting residual bounds it") {
+TEST_CASE("gathering residuals follow their definition and the shooting residual bounds it") {
     HandBuilt cube = unitCube();
     const Rgb rho[] = {{0.7, 0.6, 0.5}, {0.2, 0.8, 0.4}, {0.5, 0.5, 0.5}, {0.9, 0.1, 0.3}, {0.6, 0.6, 0.2}, {0.3, 0.3, 0.9}};
     for (std::size_t s = 0; s < 6; ++s) cube.material(s, rho[s], s == 4 ? Rgb(4, 3, 2) : Rgb(0.0));
@@ -323,7 +323,7 @@ TEST_CASE("setMaterial resumes to the answer of a fresh solve with the new mater
     }
 }
 
-TEST_CASE("setMaterial refuses reflectance outside [0, 1) and unknown surfaces") {
+TEST_CASE("setMaterial refuses reflectance of 1 or more, negative reflectance and unknown surfaces") {
     HandBuilt cube = unitCube();
     cube.material(0, Rgb(0.5), Rgb(1.0));
     for (const SolverMethod method : kMethods) {
@@ -491,7 +491,7 @@ TEST_CASE("Cornell box: every method's surface means agree with a tight Gauss-Se
     }
 }
 
-TEST_CASE("a seed determines the solution; threads do not") {
+TEST_CASE("a seed determines the solution, threads do not") {
     const Scene cornell = makeCornellBox();
     const PatchMesh mesh = meshAt(cornell, 0.03);
     for (const SolverMethod method : kMethods) {
