@@ -1,7 +1,9 @@
 #pragma once
-// Splits [0, count) into chunks handed out through an atomic counter to one std::jthread per core,
-// so uneven rows (a form-factor row i has n - i - 1 pairs) still balance. The first exception a
-// worker throws is rethrown on the calling thread after every worker has stopped.
+// Splits [0, count) into chunks handed out through an atomic counter to one thread per core, so
+// uneven rows (a form-factor row i has n - i - 1 pairs) still balance. The threads are the shared
+// WorkerPool's persistent helpers; when another caller holds the pool, fresh std::jthreads as
+// before, and a call from inside a job runs on its own thread. The first exception a worker throws
+// is rethrown on the calling thread after every worker has stopped.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -9,6 +11,8 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "radiometry/solver/WorkerPool.h"
 
 namespace radiant {
 
@@ -21,7 +25,7 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
     grain = std::max<std::size_t>(grain, 1);
     const std::size_t chunks = (count + grain - 1) / grain;
     const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(workerCount(), chunks));
-    if (threads <= 1) {
+    if (threads <= 1 || WorkerPool::calledFromJob()) {
         for (std::size_t begin = 0; begin < count; begin += grain) body(begin, std::min(count, begin + grain));
         return;
     }
@@ -42,6 +46,10 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
             failed = true;
         }
     };
+    if (WorkerPool::shared().tryRunOnAll(work)) {
+        if (firstError) std::rethrow_exception(firstError);
+        return;
+    }
     {
         std::vector<std::jthread> helpers;
         helpers.reserve(threads - 1);

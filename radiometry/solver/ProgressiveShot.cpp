@@ -1,18 +1,28 @@
-// The form factors of one progressive shot, from the shooter to every receiver. Three routes,
-// cheapest first: a plane test culls pairs that cannot see each other before any ray; a receiver
-// small for its distance takes the exact point-to-polygon (Lambert) factor at its centroid to the
-// whole shooter, which is F_{j->s} up to the receiver's own extent (the route of Wallace, Elmquist,
-// Haines, "A ray tracing algorithm for progressive radiosity", SIGGRAPH 1989); closer receivers
-// average that exact kernel over 2 x 2 or 4 x 4 Gauss points of their own area - a fixed cost, where
-// the adaptive area quadrature spends thousands of cells on touching pairs. Times the ray-cast
-// visibility. F_{j->s} comes out directly, so no reciprocity division by a small receiver's area.
+// The form factors of one progressive shot, from the shooter (a patch, or a block of patches of
+// one face: ProgressiveShooters.h) to every receiver patch, F_{j -> shooter}. Cheapest first:
+//  - a plane test culls pairs that cannot see each other, and the shooter's own face, before any
+//    kernel or ray;
+//  - the exact point-to-polygon (Lambert) kernel to the whole shooter at the receiver's centroid
+//    when the receiver is small for its distance to the shooter's outline - the route of Wallace,
+//    Elmquist, Haines, "A ray tracing algorithm for progressive radiosity", SIGGRAPH 1989 - and
+//    averaged over 2 x 2 or 4 x 4 Gauss points of the receiver when it is close;
+//  - visibility from rays between the receiver and fixed stratified sample points of the shooter:
+//    a far receiver casts a few rays from its centroid to a receiver-dependent subset of them
+//    (neighbouring receivers take different subsets, and each receiver is lit by many shots, so
+//    the few-ray noise averages out), a close one casts the full set from jittered points of its
+//    own area, where partial shadows are resolved on screen.
+// F_{j->s} comes out directly, so no reciprocity division by a small receiver's area.
 #include <algorithm>
 #include <array>
 #include <cmath>
 #include <memory>
+#include <numeric>
+#include <string>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "radiometry/common/Error.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/FormFactorMatrix.h"
@@ -34,15 +44,82 @@ constexpr ReceiverRule kGauss4{4,
                                {0.0694318442029737, 0.3300094782075719, 0.6699905217924281, 0.9305681557970263},
                                {0.1739274225687269, 0.3260725774312731, 0.3260725774312731, 0.1739274225687269}};
 
-/// Receivers farther than this many of their own diameters take the centroid alone (the point
-/// kernel's error from the receiver's extent falls like (diameter / distance)^2); closer than
-/// kNearInDiameters, 4 x 4 points; between, 2 x 2.
+/// Receivers farther than this many of their own diameters from the shooter's outline take the
+/// centroid alone (the point kernel's error from the receiver's extent falls like
+/// (diameter / distance)^2); closer than kNearInDiameters, 4 x 4 points; between, 2 x 2.
 constexpr double kFarInDiameters = 4.0;
 constexpr double kNearInDiameters = 1.5;
 
+/// Rays per receiver as a divisor of FormFactorOptions::visibilityRays (16 by default: 2 far, 4
+/// between, 16 near).
+constexpr int kFarRayDivisor = 8;
+constexpr int kMidRayDivisor = 4;
+
+std::uint64_t mix64(std::uint64_t z) {
+    // SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014).
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+    return z ^ (z >> 31);
+}
+
+/// Uniform in [0, 1) from the next state of a SplitMix64 sequence.
+double nextUniform(std::uint64_t& state) {
+    return static_cast<double>(mix64(state += 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53;
+}
+
+/// A point of the polygon from (u, v) in [0, 1)^2: bilinear on a quad (area-uniform on the
+/// parallelograms meshing makes of rectangles), the square-root map on a triangle.
+glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
+    const auto& c = p.vertices;
+    if (p.count == 4) return (c[0] * (1 - u) + c[1] * u) * (1 - v) + (c[3] * (1 - u) + c[2] * u) * v;
+    const double root = std::sqrt(u);
+    return c[0] * (1 - root) + c[1] * (root * (1 - v)) + c[2] * (root * v);
+}
+
+/// n points stratified in u and in v (a jittered Latin hypercube, v strata permuted by a stride
+/// coprime to n), deterministic for the seed.
+std::vector<glm::dvec3> stratifiedPoints(const PatchPolygon& p, int n, std::uint64_t seed) {
+    std::vector<glm::dvec3> points;
+    points.reserve(static_cast<std::size_t>(n));
+    const auto count = static_cast<std::uint64_t>(n);
+    std::uint64_t state = seed;
+    std::uint64_t stride = 1 + mix64(seed) % count;
+    while (std::gcd(stride, count) != 1) ++stride;
+    const std::uint64_t offset = mix64(seed + 1) % count;
+    for (std::uint64_t i = 0; i < count; ++i) {
+        const double u = (static_cast<double>(i) + nextUniform(state)) / static_cast<double>(n);
+        const double v = (static_cast<double>((stride * i + offset) % count) + nextUniform(state)) / static_cast<double>(n);
+        points.push_back(pointOn(p, u, v));
+    }
+    return points;
+}
+
+/// Distance from x to the planar convex polygon (m).
+double distanceToPolygon(const PatchPolygon& p, const glm::dvec3& x) {
+    const double height = glm::dot(x - p.centroid, p.normal);
+    const glm::dvec3 projected = x - height * p.normal;
+    double outside = 0;  // squared in-plane distance to the nearest edge, when outside any edge
+    bool inside = true;
+    double nearest = 1e300;
+    for (std::size_t k = 0; k < p.count; ++k) {
+        const glm::dvec3& a = p.vertices[k];
+        const glm::dvec3& b = p.vertices[(k + 1) % p.count];
+        const glm::dvec3 edge = b - a;
+        if (glm::dot(glm::cross(edge, projected - a), p.normal) < 0) inside = false;
+        const double t = std::clamp(glm::dot(projected - a, edge) / glm::dot(edge, edge), 0.0, 1.0);
+        const glm::dvec3 offEdge = projected - (a + t * edge);
+        nearest = std::min(nearest, glm::dot(offEdge, offEdge));
+    }
+    if (!inside) outside = nearest;
+    return std::sqrt(height * height + outside);
+}
+
 struct ShotGeometry {
-    std::vector<PatchPolygon> polygons;
+    std::vector<PatchPolygon> polygons;  ///< receivers
     std::vector<Patch> patches;
+    std::vector<PatchPolygon> shooters;
+    std::vector<std::uint32_t> shooterSurface, shooterFace;
+    std::vector<std::vector<glm::dvec3>> shooterPoints;  ///< visibility targets on each shooter
     std::unique_ptr<RayCaster> rays;
     FormFactorOptions options;
 };
@@ -70,39 +147,78 @@ double receiverAverage(const PatchPolygon& receiver, const PatchPolygon& shooter
     return sum / receiver.area;
 }
 
-double receiverToShooter(const ShotGeometry& g, std::size_t shooter, std::size_t receiver) {
-    const PatchPolygon& s = g.polygons[shooter];
+/// Unblocked fraction of `rays` segments from the receiver to the shooter's sample points: a
+/// receiver-dependent, evenly spaced subset of them; from the centroid when `fromCentroid`, else
+/// from jittered stratified points of the receiver.
+double shotVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, int rays, bool fromCentroid) {
+    const std::vector<glm::dvec3>& targets = g.shooterPoints[shooter];
+    const std::size_t count = targets.size();
+    const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
+    const std::size_t first = static_cast<std::size_t>(seed % count);
+    const std::size_t spacing = std::max<std::size_t>(1, count / static_cast<std::size_t>(rays));
     const PatchPolygon& r = g.polygons[receiver];
-    const Patch& ps = g.patches[shooter];
+    std::vector<glm::dvec3> origins;
+    if (!fromCentroid) origins = stratifiedPoints(r, rays, mix64(seed));
+    int unblocked = 0;
+    for (int k = 0; k < rays; ++k) {
+        const glm::dvec3& to = targets[(first + static_cast<std::size_t>(k) * spacing) % count];
+        const glm::dvec3& from = fromCentroid ? r.centroid : origins[static_cast<std::size_t>(k)];
+        if (!g.rays->occluded(from, to)) ++unblocked;
+    }
+    return static_cast<double>(unblocked) / static_cast<double>(rays);
+}
+
+double receiverToShooter(const ShotGeometry& g, std::size_t shooter, std::size_t receiver) {
+    const PatchPolygon& s = g.shooters[shooter];
+    const PatchPolygon& r = g.polygons[receiver];
     const Patch& pr = g.patches[receiver];
-    if (receiver == shooter || (ps.surface == pr.surface && ps.face == pr.face) || cannotSeeEachOther(s, r)) return 0;
-    const double distance = glm::length(r.centroid - s.centroid);
+    // A shooter's own patches lie on its face, as do their coplanar neighbours: no exchange.
+    if ((g.shooterSurface[shooter] == pr.surface && g.shooterFace[shooter] == pr.face) || cannotSeeEachOther(s, r))
+        return 0;
+    // The gap to the shooter's outline, not to its centre: a receiver beside a large block is near.
+    const double gap = distanceToPolygon(s, r.centroid);
     const double receiverDiameter = std::sqrt(2.0 * r.area);
-    const ReceiverRule& rule = distance > kFarInDiameters * receiverDiameter    ? kCentroid
-                               : distance > kNearInDiameters * receiverDiameter ? kGauss2
-                                                                                : kGauss4;
+    const ReceiverRule& rule = gap > kFarInDiameters * receiverDiameter    ? kCentroid
+                               : gap > kNearInDiameters * receiverDiameter ? kGauss2
+                                                                           : kGauss4;
     const double unoccluded = receiverAverage(r, s, rule);
-    if (unoccluded <= 0) return 0;
-    FormFactorOptions pairOptions = g.options;
-    pairOptions.seed = pairSeed(g.options.seed, std::min(shooter, receiver), std::max(shooter, receiver));
-    // A far receiver's shadow boundary is blurred over few of its own patches anyway; a quarter of
-    // the rays keeps its visibility within a few per cent at a quarter of the shot's main cost.
-    if (rule.order == 1) pairOptions.visibilityRays = std::max(1, g.options.visibilityRays / 4);
-    return unoccluded * visibilityFraction(s, r, g.rays.get(), pairOptions);
+    if (unoccluded <= 0 || g.options.visibilityRays <= 0) return unoccluded;
+    const int full = g.options.visibilityRays;
+    const int rays = rule.order == 1 ? std::max(1, full / kFarRayDivisor)
+                     : rule.order == 2 ? std::max(1, full / kMidRayDivisor)
+                                       : full;
+    return unoccluded * shotVisibility(g, shooter, receiver, rays, rule.order == 1);
 }
 
 } // namespace
 
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options) {
+    return makeRayCastShotFormFactors(scene, mesh, patchShooters(mesh), options);
+}
+
+ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh,
+                                           const ProgressiveShooters& shooters, const SolverOptions& options) {
+    if (shooters.polygons.size() != shooters.size() || shooters.members.size() != mesh.size())
+        throw RadiantError({scene.name, "progressive shooters"},
+                           "the shooters need one outline per group (" + std::to_string(shooters.polygons.size()) +
+                               " for " + std::to_string(shooters.size()) + " groups) and every patch once (" +
+                               std::to_string(shooters.members.size()) + " of " + std::to_string(mesh.size()) + ")");
     auto geometry = std::make_shared<ShotGeometry>();
     geometry->polygons.resize(mesh.size());
     for (std::size_t i = 0; i < mesh.size(); ++i) geometry->polygons[i] = mesh.polygon(i);
     geometry->patches = mesh.patches;
+    geometry->shooters = shooters.polygons;
+    geometry->shooterSurface = shooters.surface;
+    geometry->shooterFace = shooters.face;
     geometry->rays = std::make_unique<RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
+    const int targets = std::max(1, geometry->options.visibilityRays);
+    for (std::size_t g = 0; g < shooters.size(); ++g)
+        geometry->shooterPoints.push_back(
+            stratifiedPoints(shooters.polygons[g], targets, pairSeed(geometry->options.seed, g, ~std::size_t{0})));
     return [geometry](std::size_t shooter, std::span<double> toShooter) {
-        parallelFor(toShooter.size(), 512, [&](std::size_t begin, std::size_t end) {
+        parallelFor(toShooter.size(), 256, [&](std::size_t begin, std::size_t end) {
             for (std::size_t j = begin; j < end; ++j) toShooter[j] = receiverToShooter(*geometry, shooter, j);
         });
     };

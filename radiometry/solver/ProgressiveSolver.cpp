@@ -5,6 +5,7 @@
 
 #include <glm/common.hpp>
 
+#include "radiometry/common/Error.h"
 #include "radiometry/solver/SolverFactories.h"
 
 namespace radiant {
@@ -17,6 +18,23 @@ double bandSum(const Rgb& v) { return v.x + v.y + v.z; }
 
 ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors)
     : materials_(std::move(materials)), formFactors_(std::move(formFactors)) {
+    shooters_ = ProgressiveShooters::eachPatch(materials_.size());
+    prepareShooters();
+}
+
+ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters, ShotFormFactors formFactors)
+    : materials_(std::move(materials)), shooters_(std::move(shooters)), formFactors_(std::move(formFactors)) {
+    prepareShooters();
+}
+
+void ProgressiveSolver::prepareShooters() {
+    if (shooters_.members.size() != materials_.size())
+        throw RadiantError({"progressive solver", "shooters"},
+                           "the shooter groups hold " + std::to_string(shooters_.members.size()) +
+                               " patches, the mesh has " + std::to_string(materials_.size()));
+    shooterArea_.assign(shooters_.size(), 0.0);
+    for (std::size_t g = 0; g < shooters_.size(); ++g)
+        for (const std::uint32_t i : shooters_.group(g)) shooterArea_[g] += materials_.area[i];
     reset();
 }
 
@@ -25,6 +43,7 @@ void ProgressiveSolver::reset() {
     unshot_ = materials_.exitance;
     irradiance_.assign(materials_.size(), Rgb(0.0));
     stats_ = {};
+    lastGroup_ = -1;
     rescan();
 }
 
@@ -32,13 +51,19 @@ void ProgressiveSolver::rescan() {
     Rgb unshotPower(0.0), unshotMagnitude(0.0);
     nextShooter_ = 0;
     nextShooterPower_ = 0;
-    for (std::size_t i = 0; i < unshot_.size(); ++i) {
-        const Rgb magnitude = materials_.area[i] * glm::abs(unshot_[i]);
-        unshotPower += materials_.area[i] * unshot_[i];
-        unshotMagnitude += magnitude;
-        if (bandSum(magnitude) > nextShooterPower_) {
-            nextShooterPower_ = bandSum(magnitude);
-            nextShooter_ = i;
+    // A group is chosen by the magnitudes of its patches, not of their sum: positive and negative
+    // light (after a material edit) in one group must not hide each other from the residual.
+    for (std::size_t g = 0; g < shooters_.size(); ++g) {
+        double groupMagnitude = 0;
+        for (const std::uint32_t i : shooters_.group(g)) {
+            const Rgb magnitude = materials_.area[i] * glm::abs(unshot_[i]);
+            unshotPower += materials_.area[i] * unshot_[i];
+            unshotMagnitude += magnitude;
+            groupMagnitude += bandSum(magnitude);
+        }
+        if (groupMagnitude > nextShooterPower_) {
+            nextShooterPower_ = groupMagnitude;
+            nextShooter_ = g;
         }
     }
     stats_.unshotPower = PowerRgb(unshotPower);
@@ -62,12 +87,23 @@ IterationStats ProgressiveSolver::step() {
     stats_.iteration += 1;
     stats_.shooter = -1;
     if (nextShooterPower_ > 0) {
-        const std::size_t shooter = nextShooter_;
-        stats_.shooter = static_cast<std::int64_t>(shooter);
+        const std::size_t group = nextShooter_;
+        lastGroup_ = static_cast<std::int64_t>(group);
+        // The group leaves as one uniform radiosity carrying its members' unshot power.
+        Rgb power(0.0);
+        double brightest = -1;
+        for (const std::uint32_t i : shooters_.group(group)) {
+            power += materials_.area[i] * unshot_[i];
+            const double magnitude = materials_.area[i] * bandSum(glm::abs(unshot_[i]));
+            if (magnitude > brightest) {
+                brightest = magnitude;
+                stats_.shooter = static_cast<std::int64_t>(i);
+            }
+            unshot_[i] = Rgb(0.0);
+        }
         toShooter_.assign(materials_.size(), 0.0);
-        formFactors_(shooter, toShooter_);
-        const Rgb shot = unshot_[shooter];
-        unshot_[shooter] = Rgb(0.0);
+        formFactors_(group, toShooter_);
+        const Rgb shot = shooterArea_[group] > 0 ? power / shooterArea_[group] : Rgb(0.0);
         for (std::size_t j = 0; j < toShooter_.size(); ++j) {
             if (toShooter_[j] == 0) continue;
             const Rgb received = toShooter_[j] * shot;
@@ -107,9 +143,21 @@ std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, con
     return std::make_unique<ProgressiveSolver>(PatchMaterials::from(scene, mesh), std::move(formFactors));
 }
 
+std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
+                                                         const SolverOptions& options,
+                                                         const ProgressiveOptions& progressive) {
+    const std::size_t block = progressive.shooterBlock > 0
+                                  ? progressive.shooterBlock
+                                  : blockForShooterCount(mesh.size(), progressive.shooterCount);
+    ProgressiveShooters shooters = blockShooters(mesh, block);
+    ShotFormFactors formFactors = makeRayCastShotFormFactors(scene, mesh, shooters, options);
+    return std::make_unique<ProgressiveSolver>(PatchMaterials::from(scene, mesh), std::move(shooters),
+                                               std::move(formFactors));
+}
+
 std::unique_ptr<Solver> makeProgressiveSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                               Progress*) {
-    return makeProgressiveSolver(scene, mesh, makeRayCastShotFormFactors(scene, mesh, options));
+    return makeProgressiveSolver(scene, mesh, options, ProgressiveOptions{});
 }
 
 } // namespace radiant

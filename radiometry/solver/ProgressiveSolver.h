@@ -5,27 +5,36 @@
 //   M. F. Cohen, S. E. Chen, J. R. Wallace, D. P. Greenberg, "A progressive refinement approach to
 //   fast radiosity image generation", SIGGRAPH 1988 (shooting, shooter order, the ambient term);
 //   S. E. Chen, "Incremental radiosity: an extension of progressive radiosity to an interactive
-//   image synthesis system", SIGGRAPH 1990 (material edits shot as positive or negative light).
+//   image synthesis system", SIGGRAPH 1990 (material edits shot as positive or negative light);
+//   M. F. Cohen, D. P. Greenberg, D. S. Immel, P. J. Brock, "An efficient radiosity approach for
+//   realistic image synthesis", IEEE CG&A 1986 (coarse shooters, fine receivers: see
+//   ProgressiveShooters.h).
 #include <functional>
 #include <memory>
 #include <span>
 #include <vector>
 
+#include "radiometry/solver/ProgressiveShooters.h"
 #include "radiometry/solver/Solver.h"
 #include "radiometry/solver/SolverCommon.h"
 
 namespace radiant {
 
 /// Fills toShooter[j] = F_{j -> shooter} (dimensionless) for every patch j; 0 for the shooter
-/// itself and for patches that cannot see it. Called from one thread at a time.
+/// itself and for patches that cannot see it. Called from one thread at a time. `shooter` is a
+/// patch index, or with ProgressiveShooters a group index and F_{j -> group} to the whole group.
 using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double> toShooter)>;
 
 class ProgressiveSolver final : public Solver {
 public:
     ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors);
+    /// Groups of patches shoot together: a group's unshot power sum_i A_i dB_i leaves it as one
+    /// uniform radiosity; each patch still receives on its own. formFactors takes group indices.
+    ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters, ShotFormFactors formFactors);
 
     [[nodiscard]] SolverMethod method() const override { return SolverMethod::Progressive; }
-    /// Shoots once. Residual = sum_i A_i |unshot B_i| / sum_i A_i E_i (max over bands): an upper
+    /// Shoots once (one group). IterationStats::shooter is the group's patch with the most unshot
+    /// power. Residual = sum_i A_i |unshot B_i| / sum_i A_i E_i (max over bands): an upper
     /// bound of the gathering residual sum_i A_i |rho_i sum_j F_ij unshot B_j| / sum_i A_i E_i,
     /// since rho < 1 and sum_i A_i F_ij <= A_j.
     IterationStats step() override;
@@ -41,33 +50,59 @@ public:
     [[nodiscard]] std::vector<Rgb> solutionWithAmbient() const;
     /// Radiosity received but not yet shot, W/m^2 per band (negative after a material got darker).
     [[nodiscard]] const std::vector<Rgb>& unshot() const { return unshot_; }
-    /// Memory held by the per-patch arrays (not the shot kernel's geometry and ray caster).
+    [[nodiscard]] const ProgressiveShooters& shooters() const { return shooters_; }
+    /// The group shot by the last step, or -1.
+    [[nodiscard]] std::int64_t lastShooterGroup() const { return lastGroup_; }
+    /// Memory held by the per-patch and per-group arrays (not the shot kernel's ray caster).
     [[nodiscard]] std::size_t bytes() const {
-        return materials_.size() * (sizeof(double) * 2 + sizeof(Rgb) * 5);
+        return materials_.size() * (sizeof(double) * 2 + sizeof(Rgb) * 5 + sizeof(std::uint32_t)) +
+               shooters_.size() * (sizeof(std::uint32_t) * 3 + sizeof(PatchPolygon) + sizeof(double));
     }
 
 private:
+    /// Checks the groups against the materials, sums their areas, and resets.
+    void prepareShooters();
     /// Refreshes the shooter choice and the residual from unshot_ (after reset or an edit).
     void rescan();
 
     PatchMaterials materials_;
+    ProgressiveShooters shooters_;
     ShotFormFactors formFactors_;
+    std::vector<double> shooterArea_;  ///< m^2 per group
     std::vector<Rgb> radiosity_;   ///< B = E + rho H, W/m^2
     std::vector<Rgb> unshot_;      ///< W/m^2
     std::vector<Rgb> irradiance_;  ///< H: everything gathered so far, W/m^2; survives material edits
     std::vector<double> toShooter_;
-    std::size_t nextShooter_ = 0;
-    double nextShooterPower_ = 0;  ///< A |unshot B| summed over bands, W
+    std::size_t nextShooter_ = 0;  ///< a group
+    double nextShooterPower_ = 0;  ///< sum over its patches of A |unshot B| summed over bands, W
+    std::int64_t lastGroup_ = -1;
     IterationStats stats_;
 };
 
 std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
                                                          ShotFormFactors formFactors);
 
+struct ProgressiveOptions {
+    /// Shooter groups wanted: each face's grid is cut into blocks of about
+    /// sqrt(patches / shooterCount) patches a side (1 below that many patches).
+    std::size_t shooterCount = 400;
+    std::size_t shooterBlock = 0;  ///< when > 0, this block size instead
+};
+
+/// Block shooters over the real geometry: what makeSolver(Progressive, ...) builds.
+std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, const PatchMesh& mesh,
+                                                         const SolverOptions& options,
+                                                         const ProgressiveOptions& progressive);
+
 /// The form factors of a shot from the real geometry: cull by planes, the exact point-to-polygon
 /// kernel at the receiver's centroid where the receiver is small for its distance, the area
 /// quadrature with reciprocity where it is not, times the ray-cast visibility fraction. Parallel
 /// over receivers; owns its ray caster.
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options);
+/// The same to groups of patches (shooters.polygons must be set): F_{j -> group} for every patch j.
+/// The receiver's points and rays are chosen by its distance to the group's outline, not to its
+/// centre, so receivers beside a large group are still integrated finely.
+ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh,
+                                           const ProgressiveShooters& shooters, const SolverOptions& options);
 
 } // namespace radiant

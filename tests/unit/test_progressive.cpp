@@ -1,0 +1,289 @@
+// Progressive refinement with block shooters (Cohen, Greenberg, Immel, Brock 1986): the grouping
+// itself, the group form factors against the box closed forms (oracles.md), the furnace before
+// and after a material edit, agreement with Gauss-Seidel on the Cornell box, determinism, and the
+// persistent worker pool under parallelFor.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <atomic>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "radiometry/common/Error.h"
+#include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/ParallelFor.h"
+#include "radiometry/solver/ProgressiveSolver.h"
+#include "radiometry/solver/SolverFactories.h"
+
+using namespace radiant;
+
+namespace {
+
+constexpr double pi = std::numbers::pi;
+
+/// Directly opposed parallel rectangles a x b at distance c (Howell; oracles.md).
+double parallelRectangles(double a, double b, double c) {
+    const double x = a / c, y = b / c;
+    const double x2 = x * x, y2 = y * y;
+    return 2.0 / (pi * x * y) *
+           (std::log(std::sqrt((1 + x2) * (1 + y2) / (1 + x2 + y2))) + x * std::sqrt(1 + y2) * std::atan(x / std::sqrt(1 + y2)) +
+            y * std::sqrt(1 + x2) * std::atan(y / std::sqrt(1 + x2)) - x * std::atan(x) - y * std::atan(y));
+}
+
+/// Perpendicular rectangles w x l and h x l sharing the edge l: F from the w x l one (oracles.md).
+double perpendicularRectangles(double w, double h, double l) {
+    const double H = h / l, W = w / l;
+    const double H2 = H * H, W2 = W * W, sum = 1 + W2 + H2;
+    const double logTerm = std::log((1 + W2) * (1 + H2) / sum * std::pow(W2 * sum / ((1 + W2) * (W2 + H2)), W2) *
+                                    std::pow(H2 * sum / ((1 + H2) * (W2 + H2)), H2));
+    return 1.0 / (pi * W) *
+           (W * std::atan(1 / W) + H * std::atan(1 / H) - std::sqrt(H2 + W2) * std::atan(1 / std::sqrt(H2 + W2)) +
+            0.25 * logTerm);
+}
+
+Face faceFacing(std::vector<glm::dvec3> corners, const glm::dvec3& inside) {
+    Face face;
+    face.vertices = std::move(corners);
+    face.updateGeometry();
+    if (glm::dot(face.normal, inside - face.vertices[0]) < 0) {
+        std::reverse(face.vertices.begin(), face.vertices.end());
+        face.updateGeometry();
+    }
+    return face;
+}
+
+/// [0,w] x [0,h] x [0,d] seen from inside, surfaces x=0, x=w, y=0, y=h, z=0, z=d, all of one material.
+Scene closedBox(double w, double h, double d, const Material& material) {
+    Scene scene;
+    scene.name = "progressive test box";
+    scene.materials = {material};
+    const glm::dvec3 centre(w / 2, h / 2, d / 2);
+    const std::vector<std::vector<glm::dvec3>> faces = {
+        {{0, 0, 0}, {0, h, 0}, {0, h, d}, {0, 0, d}}, {{w, 0, 0}, {w, h, 0}, {w, h, d}, {w, 0, d}},
+        {{0, 0, 0}, {w, 0, 0}, {w, 0, d}, {0, 0, d}}, {{0, h, 0}, {w, h, 0}, {w, h, d}, {0, h, d}},
+        {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}}, {{0, 0, d}, {w, 0, d}, {w, h, d}, {0, h, d}}};
+    for (std::size_t f = 0; f < faces.size(); ++f)
+        scene.surfaces.push_back({"face " + std::to_string(f), 0, {faceFacing(faces[f], centre)}, "test"});
+    return scene;
+}
+
+PatchMesh meshAt(const Scene& scene, double maxPatchArea) {
+    MeshingOptions options;
+    options.maxPatchArea = maxPatchArea;
+    return meshScene(scene, options);
+}
+
+std::vector<Rgb> surfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) {
+    std::vector<Rgb> means;
+    for (std::size_t s = 0; s + 1 < mesh.surfaceFirstPatch.size(); ++s) {
+        Rgb power(0.0);
+        double area = 0;
+        for (std::size_t i = mesh.surfaceFirstPatch[s]; i < mesh.surfaceFirstPatch[s + 1]; ++i) {
+            power += mesh.patches[i].area * B[i];
+            area += mesh.patches[i].area;
+        }
+        means.push_back(power / area);
+    }
+    return means;
+}
+
+void solveTo(Solver& solver, double residual, std::size_t maxSteps = 100000) {
+    for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
+    REQUIRE(solver.lastStats().residual <= residual);
+}
+
+/// True when p lies in the convex polygon's plane and inside it (relative tolerance).
+bool insideOutline(const PatchPolygon& outline, const glm::dvec3& p) {
+    const double size = std::sqrt(outline.area);
+    if (std::abs(glm::dot(p - outline.centroid, outline.normal)) > 1e-9 * size) return false;
+    for (std::size_t k = 0; k < outline.count; ++k) {
+        const glm::dvec3& a = outline.vertices[k];
+        const glm::dvec3& b = outline.vertices[(k + 1) % outline.count];
+        if (glm::dot(glm::cross(b - a, p - a), outline.normal) < -1e-9 * size * size) return false;
+    }
+    return true;
+}
+
+/// sum_j A_j sum_{g on face `to`} F_{j -> g} / sum_j A_j over receivers j on face `from`: the
+/// face-to-face form factor F_{from -> to} as the block shooters see it.
+double faceToFace(const PatchMesh& mesh, const ProgressiveShooters& shooters, const ShotFormFactors& shot,
+                  std::uint32_t from, std::uint32_t to) {
+    std::vector<double> column(mesh.size());
+    double flux = 0, area = 0;
+    for (std::size_t i = mesh.surfaceFirstPatch[from]; i < mesh.surfaceFirstPatch[from + 1]; ++i) area += mesh.patches[i].area;
+    for (std::size_t g = 0; g < shooters.size(); ++g) {
+        if (shooters.surface[g] != to) continue;
+        shot(g, column);
+        for (std::size_t i = mesh.surfaceFirstPatch[from]; i < mesh.surfaceFirstPatch[from + 1]; ++i)
+            flux += mesh.patches[i].area * column[i];
+    }
+    return flux / area;
+}
+
+} // namespace
+
+TEST_SUITE("progressive") {
+
+TEST_CASE("block shooters cover every patch once with blocks of one face whose outline is their union") {
+    const Scene cornell = makeCornellBox();
+    const PatchMesh mesh = meshAt(cornell, 0.002);
+    for (const std::size_t block : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{5}}) {
+        CAPTURE(block);
+        const ProgressiveShooters shooters = blockShooters(mesh, block);
+        REQUIRE(shooters.polygons.size() == shooters.size());
+        std::vector<int> seen(mesh.size(), 0);
+        std::size_t largest = 0;
+        for (std::size_t g = 0; g < shooters.size(); ++g) {
+            const auto members = shooters.group(g);
+            largest = std::max(largest, members.size());
+            double area = 0;
+            for (const std::uint32_t i : members) {
+                seen[i] += 1;
+                CHECK(mesh.patches[i].surface == shooters.surface[g]);
+                CHECK(mesh.patches[i].face == shooters.face[g]);
+                CHECK(insideOutline(shooters.polygons[g], mesh.patches[i].centroid));
+                area += mesh.patches[i].area;
+            }
+            // Members inside the convex outline and areas summing to its area: the outline is their union.
+            CHECK(shooters.polygons[g].area == doctest::Approx(area).epsilon(1e-9));
+        }
+        CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
+        CHECK(largest <= 2 * block * block);  // a triangle lattice's cell is two triangles
+        if (block == 1) CHECK(shooters.size() == mesh.size());
+        // Every Cornell face is a quad, so the blocks really form: at least a third fill up.
+        if (block > 1) CHECK(shooters.size() * block * block < mesh.size() * 3);
+    }
+    CHECK_THROWS_AS(blockShooters(mesh, 0), RadiantError);
+    CHECK(blockForShooterCount(10000, 400) == 5);
+    CHECK(blockForShooterCount(300, 400) == 1);
+}
+
+TEST_CASE("block shooters' form factors match the box face-to-face closed forms") {
+    for (const auto& [w, h, d] : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
+        CAPTURE(w);
+        const Scene box = closedBox(w, h, d, {"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
+        const PatchMesh mesh = meshAt(box, (w * h + h * d + w * d) / 150);
+        const ProgressiveShooters shooters = blockShooters(mesh, 3);
+        REQUIRE(shooters.size() < mesh.size() / 4);
+        const ShotFormFactors shot = makeRayCastShotFormFactors(box, mesh, shooters, {});
+        // Surfaces: 0 x=0 (h x d), 1 x=w, 2 y=0 (w x d), 3 y=h, 4 z=0 (w x h), 5 z=d.
+        CHECK(faceToFace(mesh, shooters, shot, 0, 1) == doctest::Approx(parallelRectangles(h, d, w)).epsilon(3e-3));
+        CHECK(faceToFace(mesh, shooters, shot, 4, 5) == doctest::Approx(parallelRectangles(w, h, d)).epsilon(3e-3));
+        CHECK(faceToFace(mesh, shooters, shot, 0, 2) == doctest::Approx(perpendicularRectangles(h, w, d)).epsilon(3e-3));
+        CHECK(faceToFace(mesh, shooters, shot, 2, 0) == doctest::Approx(perpendicularRectangles(w, h, d)).epsilon(3e-3));
+        CHECK(faceToFace(mesh, shooters, shot, 4, 2) == doctest::Approx(perpendicularRectangles(h, d, w)).epsilon(3e-3));
+    }
+}
+
+TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflectance is edited mid-solve") {
+    const Material wall{"wall", Rgb(0.6), ExitanceRgb(Rgb(1.0, 2.0, 3.0))};
+    const Scene box = closedBox(1.0, 0.8, 1.2, wall);
+    const PatchMesh mesh = meshAt(box, 0.01);
+    ProgressiveOptions progressive;
+    progressive.shooterBlock = 3;
+    auto solver = makeProgressiveSolver(box, mesh, SolverOptions{}, progressive);
+    REQUIRE(solver->shooters().size() < mesh.size() / 4);
+    // The closure the solve sees: row j is sum over groups of F_{j -> group}, 1 in an enclosure.
+    const ShotFormFactors shot = makeRayCastShotFormFactors(box, mesh, solver->shooters(), {});
+    std::vector<double> rowSums(mesh.size(), 0.0), column(mesh.size());
+    for (std::size_t g = 0; g < solver->shooters().size(); ++g) {
+        shot(g, column);
+        for (std::size_t j = 0; j < mesh.size(); ++j) rowSums[j] += column[j];
+    }
+    double deviation = 0;
+    for (const double sum : rowSums) deviation = std::max(deviation, std::abs(sum - 1));
+    REQUIRE(deviation < 2e-2);
+    const auto check = [&](double rho) {
+        const double tolerance = rho * deviation / (1 - rho * (1 + deviation)) + 1e-5;
+        for (const Rgb& B : solver->solution()) {
+            CHECK(B.x == doctest::Approx(1.0 / (1 - rho)).epsilon(tolerance));
+            CHECK(B.z == doctest::Approx(3.0 / (1 - rho)).epsilon(tolerance));
+        }
+    };
+    solveTo(*solver, 1e-6);
+    check(0.6);
+    // Darker walls: the change is shot as negative light (Chen 1990) until the new furnace value.
+    for (std::size_t s = 0; s < box.surfaces.size(); ++s) solver->setMaterial(s, Rgb(0.3), ExitanceRgb(Rgb(1.0, 2.0, 3.0)));
+    CHECK(solver->lastStats().residual > 1e-2);
+    solveTo(*solver, 1e-6);
+    check(0.3);
+}
+
+TEST_CASE("Cornell box: block shooters agree with Gauss-Seidel per surface") {
+    const Scene cornell = makeCornellBox();
+    const PatchMesh mesh = meshAt(cornell, 0.004);
+    auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh);
+    solveTo(*reference, 1e-9);
+    const std::vector<Rgb> expected = surfaceMeans(mesh, reference->solution());
+    for (const std::size_t block : {std::size_t{2}, std::size_t{4}}) {
+        CAPTURE(block);
+        ProgressiveOptions progressive;
+        progressive.shooterBlock = block;
+        auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, progressive);
+        REQUIRE(solver->shooters().size() * 2 < mesh.size());
+        solveTo(*solver, 1e-4, 20000);
+        const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
+        for (std::size_t s = 0; s < means.size(); ++s) {
+            CAPTURE(cornell.surfaces[s].name);
+            for (int band = 0; band < 3; ++band) CHECK(means[s][band] == doctest::Approx(expected[s][band]).epsilon(0.01));
+        }
+    }
+}
+
+TEST_CASE("block shooting is deterministic for a seed and reports a member of the shot group") {
+    const Scene cornell = makeCornellBox();
+    const PatchMesh mesh = meshAt(cornell, 0.003);
+    ProgressiveOptions progressive;
+    progressive.shooterBlock = 3;
+    SolverOptions options;
+    options.seed = 11;
+    auto first = makeProgressiveSolver(cornell, mesh, options, progressive);
+    auto second = makeProgressiveSolver(cornell, mesh, options, progressive);
+    for (int k = 0; k < 30; ++k) {
+        const IterationStats a = first->step();
+        second->step();
+        const auto group = first->shooters().group(static_cast<std::size_t>(first->lastShooterGroup()));
+        CHECK(std::find(group.begin(), group.end(), static_cast<std::uint32_t>(a.shooter)) != group.end());
+    }
+    CHECK(first->solution() == second->solution());
+}
+
+TEST_CASE("parallelFor on the persistent pool covers each index once, from concurrent and nested callers") {
+    const auto coverOnce = [](std::size_t count, std::size_t grain) {
+        std::vector<std::atomic<int>> hits(count);
+        parallelFor(count, grain, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t i = begin; i < end; ++i) hits[i].fetch_add(1);
+        });
+        return std::all_of(hits.begin(), hits.end(), [](const std::atomic<int>& h) { return h.load() == 1; });
+    };
+    for (int round = 0; round < 50; ++round) CHECK(coverOnce(1000, 7));
+    // Two callers at once: one gets the pool, the other its own threads; both complete.
+    bool otherOk = false;
+    std::thread other([&] {
+        otherOk = true;
+        for (int round = 0; round < 50; ++round) otherOk = otherOk && coverOnce(997, 3);
+    });
+    for (int round = 0; round < 50; ++round) CHECK(coverOnce(1003, 5));
+    other.join();
+    CHECK(otherOk);
+    // Nested loops run inline on the worker rather than waiting on the pool they occupy.
+    std::atomic<int> inner{0};
+    parallelFor(8, 1, [&](std::size_t, std::size_t) { parallelFor(10, 2, [&](std::size_t b, std::size_t e) { inner += static_cast<int>(e - b); }); });
+    CHECK(inner.load() == 80);
+    // A worker's exception reaches the caller, and the pool still works afterwards.
+    CHECK_THROWS_AS(parallelFor(100, 1,
+                                [](std::size_t begin, std::size_t) {
+                                    if (begin == 57) throw std::runtime_error("57");
+                                }),
+                    std::runtime_error);
+    CHECK(coverOnce(500, 1));
+}
+
+} // TEST_SUITE
