@@ -17,6 +17,7 @@ Subcommand addBenchCommand(CLI::App& root) {
                 benchScenes(*options).print();
                 benchFormFactors(*options).print();
                 benchSolvers(*options).print();
+                benchHemicube(*options).print();
                 benchFrames(*options).print();
                 return 0;
             }};

@@ -1,0 +1,197 @@
+#include "app/panels/HemispherePanel.h"
+
+#include <imgui.h>
+
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/hemicube/HemicubeGather.h"
+#include "render/SceneTriangles.h"
+
+namespace radiant::app {
+namespace {
+
+constexpr int kViewPixels = 320;
+constexpr int kResolutions[] = {64, 128, 256, 512};
+
+} // namespace
+
+/// The exact route's machinery, rebuilt when the mesh changes.
+struct HemispherePanel::Exact {
+    std::uint64_t meshGeneration = 0;
+    std::shared_ptr<const Scene> scene;
+    std::shared_ptr<const PatchMesh> mesh;
+    std::unique_ptr<RayCaster> rays;
+    std::unique_ptr<Probe> probe;
+};
+
+HemispherePanel::HemispherePanel(std::shared_ptr<HemicubeSession> session) : session_(std::move(session)) {}
+HemispherePanel::~HemispherePanel() = default;
+
+void HemispherePanel::setProjection(HemisphereProjection projection) {
+    projection_ = projection;
+    map_.reset();
+    dirty_ = true;
+}
+void HemispherePanel::setColouring(render::HemisphereColouring colouring) {
+    imageOptions_.colouring = colouring;
+    dirty_ = true;
+}
+void HemispherePanel::setTarget(std::size_t surface) {
+    target_ = surface;
+    dirty_ = true;
+}
+
+void HemispherePanel::update() {
+    session_->update();
+    if (!session_->ready()) {
+        comparison_.reset();
+        return;
+    }
+    const Snapshot& snapshot = session_->snapshot();
+    if (!target_ || *target_ >= snapshot.scene->surfaces.size()) {
+        // Default: the first emitter, the surface a lecture asks about.
+        target_ = 0;
+        for (std::size_t s = 0; s < snapshot.scene->surfaces.size(); ++s)
+            if (snapshot.scene->materials[snapshot.scene->surfaces[s].material].emits()) {
+                target_ = s;
+                break;
+            }
+        dirty_ = true;
+    }
+    if (dirty_ || colouredVersion_ != session_->version()) {
+        recolour();
+        remeasure();
+        colouredVersion_ = session_->version();
+        dirty_ = false;
+    }
+}
+
+void HemispherePanel::recolour() {
+    const render::HemicubeCapture& capture = session_->capture();
+    if (!map_ || map_->projection() != projection_ || mapResolution_ != capture.layout.resolution()) {
+        map_.emplace(capture.layout, projection_, kViewPixels);
+        mapResolution_ = capture.layout.resolution();
+    }
+    const Snapshot& snapshot = session_->snapshot();
+    std::vector<glm::vec3> colours;
+    for (const Surface& surface : snapshot.scene->surfaces)
+        colours.push_back(render::displayColour(snapshot.scene->materials[surface.material]));
+    imageOptions_.targetSurface = target_;
+    const std::span<const Rgb> radiosity = snapshot.radiosity.size() == snapshot.mesh->size()
+                                               ? std::span<const Rgb>(snapshot.radiosity)
+                                               : std::span<const Rgb>();
+    const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture.layout, capture.items,
+                                                                   *snapshot.mesh, colours, radiosity, imageOptions_);
+    if (!texture_) texture_.emplace();
+    texture_->upload(kViewPixels, kViewPixels, rgba);
+}
+
+void HemispherePanel::remeasure() {
+    const Snapshot& snapshot = session_->snapshot();
+    if (!exact_ || exact_->meshGeneration != snapshot.meshGeneration) {
+        exact_ = std::make_unique<Exact>();
+        exact_->meshGeneration = snapshot.meshGeneration;
+        exact_->scene = snapshot.scene;
+        exact_->mesh = snapshot.mesh;
+        exact_->rays = std::make_unique<RayCaster>(*exact_->scene);
+        exact_->probe = std::make_unique<Probe>(*exact_->scene, *exact_->mesh, exact_->rays.get());
+    }
+    const HemicubePoint& point = *session_->point();
+    Comparison c;
+    const HemicubeSurfaceReading& reading = session_->gathered().surfaces[*target_];
+    c.hemicubeSolidAngle = reading.solidAngle;
+    c.hemicubeFormFactor = reading.formFactor;
+    const render::HemicubeCapture& capture = session_->capture();
+    const HemisphereViewMap nusselt(capture.layout, HemisphereProjection::Nusselt, kViewPixels);
+    const Snapshot& s = snapshot;
+    const std::size_t target = *target_;
+    c.nusseltCoverage = diskCoverage(nusselt, capture.items, [&](std::uint32_t item) {
+        return hemicubeItemIsFront(item) && s.mesh->patches[hemicubeItemPatch(item)].surface == target;
+    });
+    try {
+        const SurfacePoint at = exact_->probe->locate(point.point, point.normal);
+        c.exact = exact_->probe->target(at, point.normal, target);
+        comparison_ = c;
+    } catch (const std::exception&) {
+        comparison_.reset();  // the point left the surface (a new mesh): wait for the next pick
+    }
+}
+
+void HemispherePanel::draw() {
+    if (!session_->ready()) {
+        ImGui::TextWrapped("Click a surface in the 3D view to stand a hemicube on it.");
+        return;
+    }
+    const Snapshot& snapshot = session_->snapshot();
+    const render::HemicubeCapture& capture = session_->capture();
+
+    int resolution = session_->resolution();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    if (ImGui::BeginCombo("hemicube (px per side)", std::to_string(resolution).c_str())) {
+        for (const int r : kResolutions)
+            if (ImGui::Selectable(std::to_string(r).c_str(), r == resolution)) session_->setResolution(r);
+        ImGui::EndCombo();
+    }
+    int projection = static_cast<int>(projection_);
+    if (ImGui::RadioButton("Nusselt", &projection, 0) | (ImGui::SameLine(), ImGui::RadioButton("equidistant", &projection, 1)) |
+        (ImGui::SameLine(), ImGui::RadioButton("equisolid", &projection, 2)))
+        setProjection(static_cast<HemisphereProjection>(projection));
+    int colouring = static_cast<int>(imageOptions_.colouring);
+    if (ImGui::RadioButton("surfaces", &colouring, 0) | (ImGui::SameLine(), ImGui::RadioButton("radiance", &colouring, 1)) |
+        (ImGui::SameLine(), ImGui::RadioButton("delta F", &colouring, 2)))
+        setColouring(static_cast<render::HemisphereColouring>(colouring));
+    if (ImGui::Checkbox("theta/phi grid (15 / 30 deg)", &imageOptions_.grid)) dirty_ = true;
+    if (ImGui::BeginCombo("target", snapshot.scene->surfaces[*target_].name.c_str())) {
+        for (std::size_t s = 0; s < snapshot.scene->surfaces.size(); ++s)
+            if (ImGui::Selectable(snapshot.scene->surfaces[s].name.c_str(), s == *target_)) setTarget(s);
+        ImGui::EndCombo();
+    }
+
+    if (texture_) {
+        const float side = std::min(ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 20.0f);
+        // ImGui's texture handle is the GL texture name (imgui_impl_opengl3's convention).
+        ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_->id())), {side, side});  // NOLINT
+    }
+    ImGui::TextDisabled("%s, %d x %d x 3 hemicube, %.1f ms", projectionName(projection_), capture.layout.width(),
+                        capture.layout.width(), session_->lastRenderSeconds() * 1e3);
+    if (projection_ == HemisphereProjection::Nusselt)
+        ImGui::TextWrapped("Share of the disk a surface covers = its form factor.");
+    else if (projection_ == HemisphereProjection::Equisolid)
+        ImGui::TextWrapped("Equal-area: share of the disk = solid angle / 2 pi sr.");
+
+    if (comparison_) {
+        const Comparison& c = *comparison_;
+        if (ImGui::BeginTable("##hemicube-vs-exact", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerH)) {
+            ImGui::TableSetupColumn(snapshot.scene->surfaces[*target_].name.c_str());
+            ImGui::TableSetupColumn("hemicube");
+            ImGui::TableSetupColumn("exact kernel");
+            ImGui::TableHeadersRow();
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(); ImGui::TextUnformatted("solid angle");
+            ImGui::TableNextColumn(); ImGui::Text("%.5f sr", c.hemicubeSolidAngle.value());
+            ImGui::TableNextColumn(); ImGui::Text("%.5f sr", c.exact.solidAngle.value());
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(); ImGui::TextUnformatted("form factor");
+            ImGui::TableNextColumn(); ImGui::Text("%.5f", c.hemicubeFormFactor);
+            ImGui::TableNextColumn(); ImGui::Text("%.5f", c.exact.formFactor);
+            ImGui::TableNextRow();
+            ImGui::TableNextColumn(); ImGui::TextUnformatted("Nusselt disk share");
+            ImGui::TableNextColumn(); ImGui::Text("%.5f", c.nusseltCoverage);
+            ImGui::TableNextColumn(); ImGui::TextDisabled("(= F)");
+            ImGui::EndTable();
+        }
+        if (c.exact.formFactor > 0)
+            ImGui::TextDisabled("hemicube F differs by %+.2f %%", 100.0 * (c.hemicubeFormFactor / c.exact.formFactor - 1.0));
+    }
+    const Rgb e = session_->gathered().irradiance.value();
+    ImGui::Text("E = sum B_j F_j = (%.4g, %.4g, %.4g) W/m^2", e.x, e.y, e.z);
+    ImGui::TextDisabled("sum of delta F = %.5f (sky %.4f, backs %.4f)", session_->gathered().totalFormFactor,
+                        session_->gathered().openFormFactor, session_->gathered().backFaceFormFactor);
+}
+
+} // namespace radiant::app

@@ -1,0 +1,128 @@
+#include "render/hemicube/HemisphereImage.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include <glm/common.hpp>
+
+#include "radiometry/hemicube/HemicubeGather.h"
+
+namespace radiant::render {
+namespace {
+
+std::uint8_t toSrgbByte(float linear) {
+    const float c = std::clamp(linear, 0.0f, 1.0f);
+    const float s = c <= 0.0031308f ? 12.92f * c : 1.055f * std::pow(c, 1.0f / 2.4f) - 0.055f;
+    return static_cast<std::uint8_t>(std::lround(s * 255.0f));
+}
+
+/// A perceptually ordered ramp (dark blue -> teal -> yellow) for the heat map, in linear RGB.
+glm::vec3 heat(float t) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    const glm::vec3 low{0.02f, 0.01f, 0.15f}, mid{0.02f, 0.35f, 0.35f}, high{1.0f, 0.85f, 0.05f};
+    return t < 0.5f ? glm::mix(low, mid, t * 2.0f) : glm::mix(mid, high, t * 2.0f - 1.0f);
+}
+
+const glm::vec3 kSky{0.012f, 0.014f, 0.02f};
+const glm::vec3 kGrid{0.55f, 0.55f, 0.6f};
+const glm::vec3 kOutline{1.0f, 0.8f, 0.0f};
+
+} // namespace
+
+std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
+                                          std::span<const std::uint32_t> items, const PatchMesh& mesh,
+                                          std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
+                                          const HemisphereImageOptions& options) {
+    const int size = map.size();
+    const std::vector<std::int64_t>& index = map.atlasIndex();
+    std::vector<std::uint8_t> rgba(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4, 0);
+
+    const auto surfaceAt = [&](std::size_t pixel) -> std::optional<std::size_t> {
+        const std::int64_t atlas = index[pixel];
+        if (atlas < 0) return std::nullopt;
+        const std::uint32_t item = items[static_cast<std::size_t>(atlas)];
+        if (item == kHemicubeEmpty) return std::nullopt;
+        return mesh.patches[hemicubeItemPatch(item)].surface;
+    };
+
+    double scale = options.radianceScale;
+    if (options.colouring == HemisphereColouring::Radiance && scale <= 0) {
+        for (const std::uint32_t item : items)
+            if (hemicubeItemIsFront(item) && !radiosity.empty()) {
+                const Rgb& b = radiosity[hemicubeItemPatch(item)];
+                scale = std::max({scale, b.x, b.y, b.z});
+            }
+        scale /= std::numbers::pi;
+    }
+    const double maxDeltaFormFactor = layout.pixelArea() / std::numbers::pi;
+
+    const double lineHalfWidth = 0.8 / size;  // in disk units: about 0.8 px either side
+    for (int row = 0; row < size; ++row)
+        for (int column = 0; column < size; ++column) {
+            const std::size_t pixel = static_cast<std::size_t>(row) * static_cast<std::size_t>(size) +
+                                      static_cast<std::size_t>(column);
+            const std::int64_t atlas = index[pixel];
+            if (atlas < 0) continue;
+            const std::uint32_t item = items[static_cast<std::size_t>(atlas)];
+            glm::vec3 colour = kSky;
+            switch (options.colouring) {
+            case HemisphereColouring::Surfaces:
+                if (item != kHemicubeEmpty) {
+                    const std::size_t surface = mesh.patches[hemicubeItemPatch(item)].surface;
+                    colour = surface < surfaceColours.size() ? surfaceColours[surface] : glm::vec3(0.5f);
+                    if (!hemicubeItemIsFront(item)) colour *= 0.25f;
+                }
+                break;
+            case HemisphereColouring::Radiance:
+                if (hemicubeItemIsFront(item) && !radiosity.empty() && scale > 0)
+                    colour = glm::vec3(radiosity[hemicubeItemPatch(item)] / (std::numbers::pi * scale));
+                else if (item != kHemicubeEmpty)
+                    colour = glm::vec3(0.0f);
+                break;
+            case HemisphereColouring::DeltaFormFactor:
+                colour = heat(static_cast<float>(layout.deltaFormFactors()[static_cast<std::size_t>(atlas)] /
+                                                 maxDeltaFormFactor));
+                break;
+            }
+
+            if (options.grid) {
+                const glm::dvec2 p{(column + 0.5) / size * 2.0 - 1.0, 1.0 - (row + 0.5) / size * 2.0};
+                const double radius = std::hypot(p.x, p.y);
+                bool onGrid = false;
+                for (int k = 1; k <= 6 && !onGrid; ++k) {  // theta = 15, 30, ..., 90 degrees
+                    const double theta = k * std::numbers::pi / 12.0;
+                    const glm::dvec2 rim = diskPointOfDirection(
+                        map.projection(), {std::sin(theta), 0.0, std::cos(theta)});
+                    onGrid = std::abs(radius - rim.x) < lineHalfWidth;
+                }
+                for (int k = 0; k < 12 && !onGrid; ++k) {  // phi = 0, 30, ..., 330 degrees
+                    const double phi = k * std::numbers::pi / 6.0;
+                    const double along = p.x * std::cos(phi) + p.y * std::sin(phi);
+                    const double across = -p.x * std::sin(phi) + p.y * std::cos(phi);
+                    onGrid = along > 0 && std::abs(across) < lineHalfWidth;
+                }
+                if (onGrid) colour = glm::mix(colour, kGrid, 0.6f);
+            }
+
+            if (options.targetSurface && surfaceAt(pixel) == options.targetSurface) {
+                // An edge pixel of the target: some 4-neighbour shows something else.
+                const auto differs = [&](int c, int r) {
+                    if (c < 0 || r < 0 || c >= size || r >= size) return true;
+                    const std::size_t neighbour = static_cast<std::size_t>(r) * static_cast<std::size_t>(size) +
+                                                  static_cast<std::size_t>(c);
+                    return index[neighbour] < 0 || surfaceAt(neighbour) != options.targetSurface;
+                };
+                if (differs(column - 1, row) || differs(column + 1, row) || differs(column, row - 1) ||
+                    differs(column, row + 1))
+                    colour = kOutline;
+            }
+            rgba[pixel * 4 + 0] = toSrgbByte(colour.x);
+            rgba[pixel * 4 + 1] = toSrgbByte(colour.y);
+            rgba[pixel * 4 + 2] = toSrgbByte(colour.z);
+            rgba[pixel * 4 + 3] = 255;
+        }
+    return rgba;
+}
+
+} // namespace radiant::render

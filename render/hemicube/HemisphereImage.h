@@ -1,0 +1,40 @@
+#pragma once
+// Colours a disk view of the hemisphere (HemisphereProjection.h) from a hemicube's item buffer:
+// each surface in its display colour, or the radiance L = B / pi it sends toward the point, or the
+// delta form factors as a heat map; with the theta/phi grid of d omega cells and the target surface
+// outlined. GL-free: pixels in memory, which ImageTexture uploads and tests inspect.
+#include <cstdint>
+#include <optional>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "radiometry/hemicube/HemicubeLayout.h"
+#include "radiometry/hemicube/HemisphereProjection.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/units/Quantity.h"
+
+namespace radiant::render {
+
+enum class HemisphereColouring {
+    Surfaces,        ///< each surface in its material's display colour, backs darkened
+    Radiance,        ///< L = B / pi of the patch seen, scaled so `radianceScale` is white
+    DeltaFormFactor  ///< the hemicube pixel's dF relative to the largest (dA / pi at the zenith)
+};
+
+struct HemisphereImageOptions {
+    HemisphereColouring colouring = HemisphereColouring::Surfaces;
+    std::optional<std::size_t> targetSurface;  ///< outlined in yellow
+    bool grid = true;                          ///< theta every 15 degrees, phi every 30 degrees
+    double radianceScale = 0;                  ///< W/(m^2 sr) shown as white; 0: the brightest pixel
+};
+
+/// RGBA8, map.size() squared pixels, top row first; outside the disk transparent.
+/// `surfaceColours` (linear RGB per surface) is used for Surfaces; `radiosity` (W/m^2 per patch) for Radiance.
+std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
+                                          std::span<const std::uint32_t> items, const PatchMesh& mesh,
+                                          std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
+                                          const HemisphereImageOptions& options);
+
+} // namespace radiant::render
