@@ -41,7 +41,7 @@ ProgressiveShooters patchShooters(const PatchMesh& mesh);
 /// shoot alone. block = 1 gives patchShooters. Throws RadiantError for block 0.
 ProgressiveShooters blockShooters(const PatchMesh& mesh, std::size_t block);
 
-/// The block size giving about `shooters` groups for the mesh's patch count (at least 1).
+/// The block side that cuts `patchCount` patches into about `shooters` full blocks (at least 1).
 std::size_t blockForShooterCount(std::size_t patchCount, std::size_t shooters);
 
 } // namespace radiant

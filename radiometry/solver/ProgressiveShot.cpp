@@ -6,7 +6,9 @@
 //    when the receiver is small for its distance to the shooter's outline - the route of Wallace,
 //    Elmquist, Haines, "A ray tracing algorithm for progressive radiosity", SIGGRAPH 1989 - and
 //    averaged over 2 x 2 or 4 x 4 Gauss points of the receiver when it is close;
-//  - visibility from rays between the receiver and fixed stratified sample points of the shooter:
+//  - visibility from rays between the receiver and stratified sample points of the shooter, drawn
+//    afresh for each shot where the group's unshot power is (a block of floor half under a box
+//    shoots from its lit half only):
 //    a far receiver casts a few rays from its centroid to a receiver-dependent subset of them
 //    (neighbouring receivers take different subsets, and each receiver is lit by many shots, so
 //    the few-ray noise averages out), a close one casts the full set from jittered points of its
@@ -119,7 +121,8 @@ struct ShotGeometry {
     std::vector<Patch> patches;
     std::vector<PatchPolygon> shooters;
     std::vector<std::uint32_t> shooterSurface, shooterFace;
-    std::vector<std::vector<glm::dvec3>> shooterPoints;  ///< visibility targets on each shooter
+    ProgressiveShooters groups;
+    std::vector<std::uint32_t> timesShot;  ///< per group: a fresh jitter for every shot
     std::unique_ptr<RayCaster> rays;
     FormFactorOptions options;
 };
@@ -147,11 +150,47 @@ double receiverAverage(const PatchPolygon& receiver, const PatchPolygon& shooter
     return sum / receiver.area;
 }
 
-/// Unblocked fraction of `rays` segments from the receiver to the shooter's sample points: a
+/// visibilityRays points of the group, stratified over its members' share of the shot's power
+/// (by area when no share is given): stratum t falls in the member whose cumulative share covers
+/// it, at a u within that member proportional to where in its share it fell and a v from a
+/// permuted stratum, so a lone patch gets a jittered Latin hypercube.
+std::vector<glm::dvec3> shotTargets(ShotGeometry& g, std::size_t group, std::span<const double> memberPower) {
+    const auto members = g.groups.group(group);
+    std::vector<double> cumulative(members.size());
+    double total = 0;
+    const bool byPower = memberPower.size() == members.size() &&
+                         std::any_of(memberPower.begin(), memberPower.end(), [](double w) { return w > 0; });
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        total += byPower ? std::max(0.0, memberPower[k]) : g.polygons[members[k]].area;
+        cumulative[k] = total;
+    }
+    const int n = std::max(1, g.options.visibilityRays);
+    const auto count = static_cast<std::uint64_t>(n);
+    std::uint64_t state = pairSeed(g.options.seed, group, g.timesShot[group]++);
+    std::uint64_t stride = 1 + mix64(state) % count;
+    while (std::gcd(stride, count) != 1) ++stride;
+    const std::uint64_t offset = mix64(state + 1) % count;
+    std::vector<glm::dvec3> targets;
+    targets.reserve(count);
+    for (std::uint64_t t = 0; t < count; ++t) {
+        const double at = (static_cast<double>(t) + nextUniform(state)) / static_cast<double>(n) * total;
+        const std::size_t k = std::min<std::size_t>(
+            members.size() - 1, static_cast<std::size_t>(std::upper_bound(cumulative.begin(), cumulative.end(), at) -
+                                                         cumulative.begin()));
+        const double below = k == 0 ? 0.0 : cumulative[k - 1];
+        const double share = cumulative[k] - below;
+        const double u = share > 0 ? std::clamp((at - below) / share, 0.0, 1.0) : 0.5;
+        const double v = (static_cast<double>((stride * t + offset) % count) + nextUniform(state)) / static_cast<double>(n);
+        targets.push_back(pointOn(g.polygons[members[k]], u, v));
+    }
+    return targets;
+}
+
+/// Unblocked fraction of `rays` segments from the receiver to the shot's target points: a
 /// receiver-dependent, evenly spaced subset of them; from the centroid when `fromCentroid`, else
 /// from jittered stratified points of the receiver.
-double shotVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, int rays, bool fromCentroid) {
-    const std::vector<glm::dvec3>& targets = g.shooterPoints[shooter];
+double shotVisibility(const ShotGeometry& g, const std::vector<glm::dvec3>& targets, std::size_t shooter,
+                      std::size_t receiver, int rays, bool fromCentroid) {
     const std::size_t count = targets.size();
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
     const std::size_t first = static_cast<std::size_t>(seed % count);
@@ -168,7 +207,8 @@ double shotVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t re
     return static_cast<double>(unblocked) / static_cast<double>(rays);
 }
 
-double receiverToShooter(const ShotGeometry& g, std::size_t shooter, std::size_t receiver) {
+double receiverToShooter(const ShotGeometry& g, const std::vector<glm::dvec3>& targets, std::size_t shooter,
+                         std::size_t receiver) {
     const PatchPolygon& s = g.shooters[shooter];
     const PatchPolygon& r = g.polygons[receiver];
     const Patch& pr = g.patches[receiver];
@@ -187,7 +227,7 @@ double receiverToShooter(const ShotGeometry& g, std::size_t shooter, std::size_t
     const int rays = rule.order == 1 ? std::max(1, full / kFarRayDivisor)
                      : rule.order == 2 ? std::max(1, full / kMidRayDivisor)
                                        : full;
-    return unoccluded * shotVisibility(g, shooter, receiver, rays, rule.order == 1);
+    return unoccluded * shotVisibility(g, targets, shooter, receiver, rays, rule.order == 1);
 }
 
 } // namespace
@@ -198,6 +238,14 @@ ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& 
 
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh,
                                            const ProgressiveShooters& shooters, const SolverOptions& options) {
+    GroupShotFormFactors byPower = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
+    return [byPower = std::move(byPower)](std::size_t shooter, std::span<double> toShooter) {
+        byPower(shooter, {}, toShooter);
+    };
+}
+
+GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const PatchMesh& mesh,
+                                                     const ProgressiveShooters& shooters, const SolverOptions& options) {
     if (shooters.polygons.size() != shooters.size() || shooters.members.size() != mesh.size())
         throw RadiantError({scene.name, "progressive shooters"},
                            "the shooters need one outline per group (" + std::to_string(shooters.polygons.size()) +
@@ -210,16 +258,15 @@ ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& 
     geometry->shooters = shooters.polygons;
     geometry->shooterSurface = shooters.surface;
     geometry->shooterFace = shooters.face;
+    geometry->groups = shooters;
+    geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = std::make_unique<RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
-    const int targets = std::max(1, geometry->options.visibilityRays);
-    for (std::size_t g = 0; g < shooters.size(); ++g)
-        geometry->shooterPoints.push_back(
-            stratifiedPoints(shooters.polygons[g], targets, pairSeed(geometry->options.seed, g, ~std::size_t{0})));
-    return [geometry](std::size_t shooter, std::span<double> toShooter) {
+    return [geometry](std::size_t shooter, std::span<const double> memberPower, std::span<double> toShooter) {
+        const std::vector<glm::dvec3> targets = shotTargets(*geometry, shooter, memberPower);
         parallelFor(toShooter.size(), 256, [&](std::size_t begin, std::size_t end) {
-            for (std::size_t j = begin; j < end; ++j) toShooter[j] = receiverToShooter(*geometry, shooter, j);
+            for (std::size_t j = begin; j < end; ++j) toShooter[j] = receiverToShooter(*geometry, targets, shooter, j);
         });
     };
 }

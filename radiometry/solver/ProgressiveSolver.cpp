@@ -17,12 +17,16 @@ double bandSum(const Rgb& v) { return v.x + v.y + v.z; }
 } // namespace
 
 ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors)
-    : materials_(std::move(materials)), formFactors_(std::move(formFactors)) {
+    : materials_(std::move(materials)),
+      formFactors_([f = std::move(formFactors)](std::size_t shooter, std::span<const double>, std::span<double> out) {
+          f(shooter, out);
+      }) {
     shooters_ = ProgressiveShooters::eachPatch(materials_.size());
     prepareShooters();
 }
 
-ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters, ShotFormFactors formFactors)
+ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters,
+                                     GroupShotFormFactors formFactors)
     : materials_(std::move(materials)), shooters_(std::move(shooters)), formFactors_(std::move(formFactors)) {
     prepareShooters();
 }
@@ -92,9 +96,11 @@ IterationStats ProgressiveSolver::step() {
         // The group leaves as one uniform radiosity carrying its members' unshot power.
         Rgb power(0.0);
         double brightest = -1;
+        memberPower_.clear();
         for (const std::uint32_t i : shooters_.group(group)) {
             power += materials_.area[i] * unshot_[i];
             const double magnitude = materials_.area[i] * bandSum(glm::abs(unshot_[i]));
+            memberPower_.push_back(magnitude / nextShooterPower_);
             if (magnitude > brightest) {
                 brightest = magnitude;
                 stats_.shooter = static_cast<std::int64_t>(i);
@@ -102,7 +108,7 @@ IterationStats ProgressiveSolver::step() {
             unshot_[i] = Rgb(0.0);
         }
         toShooter_.assign(materials_.size(), 0.0);
-        formFactors_(group, toShooter_);
+        formFactors_(group, memberPower_, toShooter_);
         const Rgb shot = shooterArea_[group] > 0 ? power / shooterArea_[group] : Rgb(0.0);
         for (std::size_t j = 0; j < toShooter_.size(); ++j) {
             if (toShooter_[j] == 0) continue;
@@ -150,7 +156,7 @@ std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, con
                                   ? progressive.shooterBlock
                                   : blockForShooterCount(mesh.size(), progressive.shooterCount);
     ProgressiveShooters shooters = blockShooters(mesh, block);
-    ShotFormFactors formFactors = makeRayCastShotFormFactors(scene, mesh, shooters, options);
+    GroupShotFormFactors formFactors = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
     return std::make_unique<ProgressiveSolver>(PatchMaterials::from(scene, mesh), std::move(shooters),
                                                std::move(formFactors));
 }

@@ -24,13 +24,18 @@ namespace radiant {
 /// itself and for patches that cannot see it. Called from one thread at a time. `shooter` is a
 /// patch index, or with ProgressiveShooters a group index and F_{j -> group} to the whole group.
 using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double> toShooter)>;
+/// ShotFormFactors for a group, told where in it the light leaves from: memberPower[k] >= 0 is the
+/// share of the shot's unshot power held by the group's k-th patch (they sum to 1), so visibility
+/// can be sampled where the light is, not over parts of the group that hold none (floor under a box).
+using GroupShotFormFactors =
+    std::function<void(std::size_t group, std::span<const double> memberPower, std::span<double> toShooter)>;
 
 class ProgressiveSolver final : public Solver {
 public:
     ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors);
     /// Groups of patches shoot together: a group's unshot power sum_i A_i dB_i leaves it as one
     /// uniform radiosity; each patch still receives on its own. formFactors takes group indices.
-    ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters, ShotFormFactors formFactors);
+    ProgressiveSolver(PatchMaterials materials, ProgressiveShooters shooters, GroupShotFormFactors formFactors);
 
     [[nodiscard]] SolverMethod method() const override { return SolverMethod::Progressive; }
     /// Shoots once (one group). IterationStats::shooter is the group's patch with the most unshot
@@ -67,7 +72,8 @@ private:
 
     PatchMaterials materials_;
     ProgressiveShooters shooters_;
-    ShotFormFactors formFactors_;
+    GroupShotFormFactors formFactors_;
+    std::vector<double> memberPower_;
     std::vector<double> shooterArea_;  ///< m^2 per group
     std::vector<Rgb> radiosity_;   ///< B = E + rho H, W/m^2
     std::vector<Rgb> unshot_;      ///< W/m^2
@@ -83,9 +89,15 @@ std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, con
                                                          ShotFormFactors formFactors);
 
 struct ProgressiveOptions {
-    /// Shooter groups wanted: each face's grid is cut into blocks of about
-    /// sqrt(patches / shooterCount) patches a side (1 below that many patches).
-    std::size_t shooterCount = 400;
+    /// Sets the block size: each face's grid is cut into blocks of about sqrt(patches / shooterCount)
+    /// cells a side (1 below that many patches), so there are about shooterCount full blocks plus
+    /// smaller ones at grid edges and on small faces (the Cornell box at 10k patches: 186 shooters,
+    /// residual 1e-2 after about 350 shots; 400 gives 354 shooters and needs about 4 times as many).
+    /// Larger blocks are faster but coarser: a block shoots its power spread evenly over its
+    /// outline, so a block half hidden (floor under a box) under-lights what stands next to it.
+    /// Measured on the Cornell box against Gauss-Seidel: blocks up to ~32 cm keep every surface
+    /// mean within 1%; ~38 cm blocks leave the two boxes ~9% dark. The default gives ~19 cm.
+    std::size_t shooterCount = 50;
     std::size_t shooterBlock = 0;  ///< when > 0, this block size instead
 };
 
@@ -104,5 +116,11 @@ ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& 
 /// centre, so receivers beside a large group are still integrated finely.
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh,
                                            const ProgressiveShooters& shooters, const SolverOptions& options);
+/// The same, with each shot's visibility rays aimed at points of the group's patches drawn in
+/// proportion to their share of the unshot power (stratified over that share); the unoccluded
+/// kernel stays the exact one to the group's outline. Without a share (the overload above, or all
+/// zero), in proportion to area.
+GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const PatchMesh& mesh,
+                                                     const ProgressiveShooters& shooters, const SolverOptions& options);
 
 } // namespace radiant

@@ -222,7 +222,7 @@ TEST_CASE("Cornell box: block shooters agree with Gauss-Seidel per surface") {
     auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh);
     solveTo(*reference, 1e-9);
     const std::vector<Rgb> expected = surfaceMeans(mesh, reference->solution());
-    for (const std::size_t block : {std::size_t{2}, std::size_t{4}}) {
+    for (const std::size_t block : {std::size_t{2}, std::size_t{4}, std::size_t{5}}) {
         CAPTURE(block);
         ProgressiveOptions progressive;
         progressive.shooterBlock = block;
