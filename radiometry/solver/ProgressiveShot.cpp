@@ -121,6 +121,7 @@ struct ShotGeometry {
     std::vector<Patch> patches;
     std::vector<PatchPolygon> shooters;
     std::vector<std::uint32_t> shooterSurface, shooterFace;
+    std::vector<double> shooterRadius;  ///< farthest corner from the shooter's centroid, m
     ProgressiveShooters groups;
     std::vector<std::uint32_t> timesShot;  ///< per group: a fresh jitter for every shot
     std::unique_ptr<RayCaster> rays;
@@ -216,8 +217,11 @@ double receiverToShooter(const ShotGeometry& g, const std::vector<glm::dvec3>& t
     if ((g.shooterSurface[shooter] == pr.surface && g.shooterFace[shooter] == pr.face) || cannotSeeEachOther(s, r))
         return 0;
     // The gap to the shooter's outline, not to its centre: a receiver beside a large block is near.
-    const double gap = distanceToPolygon(s, r.centroid);
+    // The distance to the centre less the shooter's radius bounds it from below, and settles most
+    // receivers as far without the exact distance.
     const double receiverDiameter = std::sqrt(2.0 * r.area);
+    const double lowerBound = glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter];
+    const double gap = lowerBound > kFarInDiameters * receiverDiameter ? lowerBound : distanceToPolygon(s, r.centroid);
     const ReceiverRule& rule = gap > kFarInDiameters * receiverDiameter    ? kCentroid
                                : gap > kNearInDiameters * receiverDiameter ? kGauss2
                                                                            : kGauss4;
@@ -259,6 +263,11 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
     geometry->shooterSurface = shooters.surface;
     geometry->shooterFace = shooters.face;
     geometry->groups = shooters;
+    for (const PatchPolygon& outline : shooters.polygons) {
+        double radius = 0;
+        for (const glm::dvec3& corner : outline.corners()) radius = std::max(radius, glm::length(corner - outline.centroid));
+        geometry->shooterRadius.push_back(radius);
+    }
     geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = std::make_unique<RayCaster>(scene);
     geometry->options = options.formFactors;

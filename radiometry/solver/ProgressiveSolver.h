@@ -96,7 +96,7 @@ struct ProgressiveOptions {
     /// Larger blocks are faster but coarser: a block shoots its power spread evenly over its
     /// outline, so a block half hidden (floor under a box) under-lights what stands next to it.
     /// Measured on the Cornell box against Gauss-Seidel: blocks up to ~32 cm keep every surface
-    /// mean within 1%; ~38 cm blocks leave the two boxes ~9% dark. The default gives ~19 cm.
+    /// mean within 1%; ~38 cm blocks leave the two boxes 8-11% dark. The default gives ~19 cm.
     std::size_t shooterCount = 50;
     std::size_t shooterBlock = 0;  ///< when > 0, this block size instead
 };
