@@ -2,7 +2,8 @@
 // The mesher emits each quad piece as an nu x nv grid, row by row, neighbours sharing corner
 // vertices; the grids are recovered here from those shared vertices alone, so nothing but the
 // PatchMesh is needed. On a planar quad the grid lines are straight, so a block of the grid is
-// exactly the convex quad of its four outer corners.
+// exactly the convex quad of its four outer corners. Triangle pieces are barycentric lattices;
+// there coarse parallelograms and triangles bounded by lattice lines are again exact unions.
 #include "radiometry/solver/ProgressiveShooters.h"
 
 #include <algorithm>
@@ -97,48 +98,62 @@ void addGroup(ProgressiveShooters& shooters, const PatchMesh& mesh, std::span<co
     shooters.face.push_back(mesh.patches[patches.front()].face);
 }
 
-/// Tiles a triangle lattice with parallelograms of whole cells (an up and a down triangle each),
-/// as large as fit below the long edge, from `block` x `block` down to single cells; the up
-/// triangles along the long edge, which have no down partner, shoot alone.
+/// Tiles a triangle lattice of n segments a side with coarse pieces whose edges are lattice lines,
+/// so each is exactly the union of its triangles. In lattice coordinates (x, y), x + y <= n: the
+/// part x + y <= n' (n' the largest multiple of `block` up to n) is a coarse lattice of side
+/// block - block x block parallelograms and, along its long edge, triangles of side block; the band
+/// n' <= x + y <= n left over is cut at x = multiples of block into parallelograms, with a small
+/// triangle where it meets y = 0.
 void addTriangleBlocks(ProgressiveShooters& shooters, const PatchMesh& mesh, const TriangleLattice& lattice,
                        std::size_t block) {
     const std::size_t n = lattice.n();
-    // Cell (i, j) is whole where i + j + 1 < n.
-    std::vector<char> taken(n * n, 0);
-    std::vector<std::uint32_t> cell;
-    const auto free = [&](std::size_t i0, std::size_t j0, std::size_t size) {
-        if (i0 + j0 + 2 * (size - 1) + 1 >= n) return false;
-        for (std::size_t j = j0; j < j0 + size; ++j)
-            for (std::size_t i = i0; i < i0 + size; ++i)
-                if (taken[j * n + i]) return false;
-        return true;
+    block = std::min(block, n);
+    const std::size_t coarse = n / block, inner = coarse * block;
+    const std::size_t bandPieces = (inner + block - 1) / block;
+    const glm::dvec3 origin = mesh.vertices[lattice.up(0, 0).corners[0]];
+    const glm::dvec3 alongX = (mesh.vertices[lattice.up(n - 1, 0).corners[1]] - origin) / static_cast<double>(n);
+    const glm::dvec3 alongY = (mesh.vertices[lattice.up(0, n - 1).corners[2]] - origin) / static_cast<double>(n);
+    const auto at = [&](std::size_t x, std::size_t y) {
+        return origin + static_cast<double>(x) * alongX + static_cast<double>(y) * alongY;
     };
-    for (std::size_t size = std::min(block, n); size >= 1; --size) {
-        for (std::size_t j0 = 0; j0 < n; ++j0) {
-            for (std::size_t i0 = 0; i0 + j0 + 1 < n; ++i0) {
-                if (!free(i0, j0, size)) continue;
-                cell.clear();
-                for (std::size_t j = j0; j < j0 + size; ++j)
-                    for (std::size_t i = i0; i < i0 + size; ++i) {
-                        taken[j * n + i] = 1;
-                        cell.push_back(static_cast<std::uint32_t>(lattice.upIndex(i, j)));
-                        cell.push_back(static_cast<std::uint32_t>(lattice.upIndex(i, j) + 1));
-                    }
-                const std::size_t i1 = i0 + size - 1, j1 = j0 + size - 1;
-                const std::array<glm::dvec3, 4> corners{mesh.vertices[lattice.up(i0, j0).corners[0]],
-                                                        mesh.vertices[lattice.up(i1, j0).corners[1]],
-                                                        mesh.vertices[lattice.down(i1, j1).corners[1]],
-                                                        mesh.vertices[lattice.up(i0, j1).corners[2]]};
-                PatchPolygon outline = PatchPolygon::from(corners);
-                outline.normal = lattice.up(i0, j0).normal;
-                addGroup(shooters, mesh, cell, outline);
-            }
+    // Region of a triangle by its centroid (never on a lattice line): coarse cells first, then the
+    // band pieces, then the corner triangle.
+    const std::size_t regions = coarse * coarse + bandPieces + 1;
+    std::vector<std::vector<std::uint32_t>> members(regions);
+    const auto regionOf = [&](double x, double y) -> std::size_t {
+        if (x + y < static_cast<double>(inner))
+            return static_cast<std::size_t>(y) / block * coarse + static_cast<std::size_t>(x) / block;
+        if (x < static_cast<double>(inner)) return coarse * coarse + static_cast<std::size_t>(x) / block;
+        return regions - 1;
+    };
+    for (std::size_t j = 0; j < n; ++j)
+        for (std::size_t i = 0; i + j < n; ++i) {
+            const auto up = static_cast<std::uint32_t>(lattice.upIndex(i, j));
+            const double x = static_cast<double>(i), y = static_cast<double>(j);
+            members[regionOf(x + 1.0 / 3, y + 1.0 / 3)].push_back(up);
+            if (i + j + 1 < n) members[regionOf(x + 2.0 / 3, y + 2.0 / 3)].push_back(up + 1);
         }
-    }
-    for (std::size_t j = 0; j < n; ++j) {
-        const std::size_t i = n - 1 - j;
-        const auto index = static_cast<std::uint32_t>(lattice.upIndex(i, j));
-        addGroup(shooters, mesh, std::span<const std::uint32_t>(&index, 1), mesh.polygon(index));
+    const glm::dvec3 normal = lattice.up(0, 0).normal;
+    const auto add = [&](std::size_t region, std::initializer_list<glm::dvec3> corners) {
+        if (members[region].empty()) return;
+        PatchPolygon outline = PatchPolygon::from(std::span<const glm::dvec3>(corners.begin(), corners.size()));
+        outline.normal = normal;
+        addGroup(shooters, mesh, members[region], outline);
+    };
+    for (std::size_t J = 0; J < coarse; ++J)
+        for (std::size_t I = 0; I + J < coarse; ++I) {
+            const std::size_t x = I * block, y = J * block;
+            if (I + J + 1 < coarse)
+                add(J * coarse + I, {at(x, y), at(x + block, y), at(x + block, y + block), at(x, y + block)});
+            else
+                add(J * coarse + I, {at(x, y), at(x + block, y), at(x, y + block)});
+        }
+    if (inner < n) {
+        for (std::size_t piece = 0; piece < bandPieces; ++piece) {
+            const std::size_t x0 = piece * block, x1 = std::min(inner, x0 + block);
+            add(coarse * coarse + piece, {at(x0, inner - x0), at(x1, inner - x1), at(x1, n - x1), at(x0, n - x0)});
+        }
+        add(regions - 1, {at(inner, 0), at(n, 0), at(inner, n - inner)});
     }
 }
 

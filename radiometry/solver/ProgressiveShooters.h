@@ -36,9 +36,10 @@ struct ProgressiveShooters {
 ProgressiveShooters patchShooters(const PatchMesh& mesh);
 
 /// Blocks of at most block x block cells of each face's patch grid (fewer at the grid's far
-/// edges): a quad grid's cell is a patch; a triangle lattice's cell is the parallelogram of two
-/// triangles, and the triangles along its long edge shoot alone. Patches in no recognised grid
-/// shoot alone. block = 1 gives patchShooters. Throws RadiantError for block 0.
+/// edges): a quad grid's cell is a patch; a triangle lattice is cut into parallelograms of
+/// block x block cells (two triangles each), triangles of side block, and a band of parallelograms
+/// along its long edge. Patches in no recognised grid shoot alone. block = 1 gives patchShooters.
+/// Throws RadiantError for block 0.
 ProgressiveShooters blockShooters(const PatchMesh& mesh, std::size_t block);
 
 /// The block side that cuts `patchCount` patches into about `shooters` full blocks (at least 1).
