@@ -12,17 +12,25 @@
 #include <optional>
 
 #include "app/panels/InfoPanel.h"
+#include "app/panels/MaterialsPanel.h"
+#include "app/panels/ProbePanel.h"
+#include "app/panels/ScenePanel.h"
+#include "app/panels/SolverPanel.h"
+#include "app/solver/LiveSolve.h"
+#include "app/solver/MethodLabel.h"
+#include "app/solver/SolverThread.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/Sidebar.h"
+#include "app/ui/StatusBar.h"
 #include "app/window/CameraController.h"
+#include "app/window/PickRay.h"
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
-#include "app/panels/ScenePanel.h"
 #include "radiometry/scene/SceneLibrary.h"
-#include "render/FlatSceneRenderer.h"
 #include "render/OffscreenRender.h"
-#include "render/WireframeRenderer.h"
+#include "render/PatchRenderer.h"
+#include "render/Screenshot.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -32,32 +40,27 @@ namespace {
 // stay visible where they meet the background.
 const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
 
-constexpr double kDefaultMaxPatchArea = 0.01;  // m^2: 100 cm^2, a few hundred patches in the Cornell box
-
-Scene openScene(const std::string& nameOrPath) {
+std::shared_ptr<const Scene> openScene(const std::string& nameOrPath) {
     LoadedScene loaded = loadScene(nameOrPath);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
-    return std::move(loaded.scene);
+    return std::make_shared<const Scene>(std::move(loaded.scene));
 }
 
-std::string windowTitle(const Scene& scene) {
-    return "Radiant - " + std::filesystem::path(scene.name).filename().string();
+std::string sceneLabel(const std::string& sceneName) { return std::filesystem::path(sceneName).filename().string(); }
+
+std::string windowTitle(const std::string& sceneName, SolverMethod method) {
+    return "Radiant - " + sceneLabel(sceneName) + " - " + methodLabel(method);
 }
 
-void sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi) {
-    lo = glm::dvec3(std::numeric_limits<double>::max());
-    hi = -lo;
+render::OrbitCamera homeCamera(const Scene& scene) {
+    glm::dvec3 lo(std::numeric_limits<double>::max());
+    glm::dvec3 hi = -lo;
     for (const Surface& surface : scene.surfaces)
         for (const Face& face : surface.faces)
             for (const glm::dvec3& v : face.vertices) {
                 lo = glm::min(lo, v);
                 hi = glm::max(hi, v);
             }
-}
-
-render::OrbitCamera homeCamera(const Scene& scene) {
-    glm::dvec3 lo, hi;
-    sceneBounds(scene, lo, hi);
     const glm::dvec3 centre = (lo + hi) / 2.0;
     // The Cornell box has a published camera; other scenes are framed from their bounds.
     return render::OrbitCamera(scene.name == "cornell-box" ? render::cornellCamera() : render::framingCamera(lo, hi),
@@ -68,17 +71,23 @@ render::OrbitCamera homeCamera(const Scene& scene) {
 
 struct Lab::State {
     explicit State(const LabOptions& options)
-        : scene(openScene(options.scene)),
-          window({options.width, options.height, windowTitle(scene), options.visible, options.vsync}),
+        : initialScene(openScene(options.scene)),
+          window({options.width, options.height, windowTitle(initialScene->name, SolverMethod::GaussSeidel),
+                  options.visible, options.vsync}),
           gl(render::queryGlInfo()),
-          orbit(homeCamera(scene)),
-          panelsVisible(options.showPanels) {
-        // Our key handler first: ImGui's backend installs its own and chains to this one.
+          orbit(homeCamera(*initialScene)),
+          panelsVisible(options.showPanels),
+          live(solverThread) {
+        display.uiScale = options.uiScale;
+        // Our callbacks first: ImGui's backend installs its own and chains to these.
         glfwSetWindowUserPointer(window.handle(), this);
         glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int) {
-            if (action != GLFW_PRESS) return;
+            if (action == GLFW_RELEASE) return;
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
-            if (ImGui::GetCurrentContext() && ImGui::GetIO().WantTextInput) return;
+            // Typing into a field, or a slider being dragged, keeps its keys.
+            if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
+            // Held keys repeat only where repeating makes sense: stepping.
+            if (action == GLFW_REPEAT && key != GLFW_KEY_N && key != GLFW_KEY_RIGHT) return;
             self->onKey(key);
         });
         glfwSetDropCallback(window.handle(), [](GLFWwindow* w, int count, const char** paths) {
@@ -86,37 +95,112 @@ struct Lab::State {
             if (count > 0 && self->scenePanel) self->scenePanel->open(paths[0]);  // one scene at a time
         });
         ui.emplace(window.handle(), options.uiScale);
-        renderer = std::make_unique<render::FlatSceneRenderer>(scene);
-        auto panel = std::make_unique<ScenePanel>(
-            [this](const Scene& loaded, const PatchMesh& mesh) { install(loaded, mesh); }, scene,
-            kDefaultMaxPatchArea);
-        scenePanel = panel.get();
-        sidebar.add(std::move(panel));
-        sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote(), *ui));
+        patches.emplace();
+
+        auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
+        scenePanel = scene.get();
+        auto probe = std::make_unique<ProbePanel>(live);
+        probePanel = probe.get();
+        sidebar.add(std::move(scene));
+        sidebar.add(std::make_unique<SolverPanel>(live));
+        sidebar.add(std::make_unique<MaterialsPanel>(live));
+        sidebar.add(std::move(probe));
+        sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote()));
+
+        live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
+        if (options.runOnStart) live.send(command::Run{});
     }
 
     ~State() {
-        wireframe.reset();
-        renderer.reset();  // GL objects die while their context is alive
+        patches.reset();  // GL objects die while their context is alive
         ui.reset();
     }
 
-    /// A new scene or a new mesh of this one, from the Scene panel's worker.
-    void install(const Scene& loaded, const PatchMesh& mesh) {
-        const bool sameScene = loaded.name == scene.name;
-        scene = loaded;
-        renderer = std::make_unique<render::FlatSceneRenderer>(scene);
-        wireframe = std::make_unique<render::WireframeRenderer>(mesh);
-        if (!sameScene) {
-            orbit = homeCamera(scene);
-            window.setTitle(windowTitle(scene));
+    void onKey(int key) {
+        const Snapshot& s = live.snapshot();
+        switch (key) {
+        case GLFW_KEY_ESCAPE: window.requestClose(); break;
+        case GLFW_KEY_SPACE: live.send(s.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}}); break;
+        case GLFW_KEY_N:
+        case GLFW_KEY_RIGHT: live.send(command::Step{1}); break;
+        case GLFW_KEY_R: live.send(command::Reset{}); break;
+        case GLFW_KEY_F:
+            display.colourMode = display.colourMode == render::ColourMode::FalseColour ? render::ColourMode::ToneMapped
+                                                                                      : render::ColourMode::FalseColour;
+            break;
+        case GLFW_KEY_W: display.wireframe = !display.wireframe; break;
+        case GLFW_KEY_C: orbit.reset(); break;
+        case GLFW_KEY_H: panelsVisible = !panelsVisible; break;
+        case GLFW_KEY_F12: screenshotRequested = true; break;
+        default: break;
         }
     }
 
-    void onKey(int key) {
-        if (key == GLFW_KEY_ESCAPE) window.requestClose();
-        if (key == GLFW_KEY_C) orbit.reset();
-        if (key == GLFW_KEY_H) panelsVisible = !panelsVisible;
+    /// Hands the newest snapshot to the renderer: each upload happens only when its generation moved.
+    void stream() {
+        live.refresh();
+        const Snapshot& s = live.snapshot();
+        if (!s.scene || !s.mesh) return;
+        patches->setMesh(*s.scene, *s.mesh, s.meshGeneration);
+        if (s.scene != materialsShown) {
+            patches->setMaterials(*s.scene);
+            materialsShown = s.scene;
+        }
+        patches->setRadiosity(s.radiosity, s.generation, s.stats.shooter);
+        if (s.scene->name != sceneShown) {
+            if (!sceneShown.empty()) orbit = homeCamera(*s.scene);
+            sceneShown = s.scene->name;
+        }
+        const std::string title = windowTitle(s.scene->name, s.method);
+        if (title != titleShown) {
+            window.setTitle(title);
+            titleShown = title;
+        }
+    }
+
+    StatusLine status() const {
+        StatusLine line;
+        const Snapshot& s = live.snapshot();
+        const SolverActivity activity = solverThread.activity();
+        if (scenePanel->loading()) {
+            line.activity = "loading scene";
+        } else if (activity == SolverActivity::Meshing || activity == SolverActivity::FormFactors) {
+            line.activity = std::string(activityName(activity));
+            line.fraction = solverThread.progress().fraction();
+        }
+        char text[160];
+        if (s.stats.iteration == 0)
+            std::snprintf(text, sizeof text, "%s - %s", methodLabel(s.method), s.running ? "starting" : "ready");
+        else
+            std::snprintf(text, sizeof text, "%s - iteration %zu - residual %.2e%s", methodLabel(s.method),
+                          s.stats.iteration, s.stats.residual, s.running ? " - running" : "");
+        line.solve = text;
+        line.message = message;
+        return line;
+    }
+
+    void drawProbeMarker() const {
+        const std::optional<ProbePick>& pick = probePanel->picked();
+        if (!pick) return;
+        const glm::dvec3 p = render::projectToPixel(lastCamera, viewport, pick->point);
+        if (p.z <= 0 || p.z >= 1) return;
+        const float ratio = window.pixelRatio();
+        const ImVec2 centre{static_cast<float>(p.x) / ratio, static_cast<float>(p.y) / ratio};
+        const float r = ImGui::GetFontSize() * 0.45f;
+        ImDrawList* draw = ImGui::GetBackgroundDrawList();
+        // Dark under light: readable on the white walls and on the black shadows alike.
+        for (const auto& [colour, thickness] : {std::pair{IM_COL32(0, 0, 0, 200), 4.0f}, std::pair{IM_COL32(255, 230, 80, 255), 2.0f}}) {
+            draw->AddCircle(centre, r, colour, 24, thickness);
+            draw->AddLine({centre.x - 2 * r, centre.y}, {centre.x - r, centre.y}, colour, thickness);
+            draw->AddLine({centre.x + r, centre.y}, {centre.x + 2 * r, centre.y}, colour, thickness);
+            draw->AddLine({centre.x, centre.y - 2 * r}, {centre.x, centre.y - r}, colour, thickness);
+            draw->AddLine({centre.x, centre.y + r}, {centre.x, centre.y + 2 * r}, colour, thickness);
+        }
+    }
+
+    bool pickAt(const glm::dvec2& framebufferPixel) {
+        const PickRay ray = pickRay(lastCamera, viewport, framebufferPixel);
+        return probePanel->pick(ray.origin, ray.direction);
     }
 
     void frame(render::ImageRgb8* capture) {
@@ -125,45 +209,74 @@ struct Lab::State {
         lastFrameTime = now;
 
         glfwPollEvents();
+        stream();
+        if (display.uiScale > 0 && display.uiScale != ui->uiScale()) ui->setUiScale(display.uiScale);
         sidebar.update();
         ui->newFrame();
         int width = 0, height = 0;
         window.framebufferSize(width, height);
         const float pixelRatio = window.pixelRatio();
 
-        const float sidebarWidth = panelsVisible ? sidebar.draw("Radiant", scene.name) : 0.0f;
+        const float sidebarWidth = panelsVisible ? sidebar.draw("Radiant", sceneLabel(sceneShown)) : 0.0f;
         const int sidebarPixels = static_cast<int>(std::lround(sidebarWidth * pixelRatio));
         viewport = {sidebarPixels, 0, std::max(1, width - sidebarPixels), std::max(1, height)};
         const render::Viewport viewInUiUnits{static_cast<int>(sidebarWidth), 0,
                                              static_cast<int>(static_cast<float>(viewport.width) / pixelRatio),
                                              static_cast<int>(static_cast<float>(viewport.height) / pixelRatio)};
         controller.update(orbit, viewInUiUnits);
-
         lastCamera = orbit.camera();
+        if (const std::optional<glm::dvec2> click = controller.click())
+            pickAt(*click * static_cast<double>(pixelRatio));
+        if (panelsVisible) drawStatusBar(viewInUiUnits, status());
+        drawProbeMarker();
+
         render::beginWindowFrame(width, height, viewport, kBackground);
-        renderer->draw(lastCamera, viewport.aspect());
-        if (wireframe && scenePanel->showWireframe()) wireframe->draw(lastCamera, viewport.aspect());
+        patches->setSettings(display);
+        patches->draw(lastCamera, viewport.aspect());
         render::useWholeWindow(width, height);
         ui->render();
-        if (capture) *capture = render::readWindowPixels(width, height);
+        if (capture || screenshotRequested) {
+            render::ImageRgb8 image = render::readWindowPixels(width, height);
+            if (screenshotRequested) saveScreenshot(image);
+            if (capture) *capture = std::move(image);
+        }
         window.swapBuffers();
+        ++frameCount;
     }
 
-    Scene scene;
+    void saveScreenshot(const render::ImageRgb8& image) {
+        screenshotRequested = false;
+        try {
+            message = "saved " + render::saveScreenshot(image).string();
+        } catch (const std::exception& e) {
+            message = std::string("screenshot failed: ") + e.what();
+        }
+    }
+
+    std::shared_ptr<const Scene> initialScene;
     Window window;
     render::GlInfo gl;
     render::OrbitCamera orbit;
     bool panelsVisible;
+    SolverThread solverThread;
+    LiveSolve live;
+    render::DisplaySettings display;
     std::optional<ImGuiLayer> ui;
-    std::unique_ptr<render::SceneRenderer> renderer;
-    std::unique_ptr<render::WireframeRenderer> wireframe;
+    std::optional<render::PatchRenderer> patches;
+    std::shared_ptr<const Scene> materialsShown;
+    std::string sceneShown;
+    std::string titleShown;
     ScenePanel* scenePanel = nullptr;  // owned by the sidebar
+    ProbePanel* probePanel = nullptr;  // owned by the sidebar
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;
     std::optional<double> lastFrameTime;
     render::Viewport viewport;
     render::Camera lastCamera;
+    bool screenshotRequested = false;
+    std::string message;
+    std::uint64_t frameCount = 0;
 };
 
 Lab::Lab(const LabOptions& options) : state_(std::make_unique<State>(options)) {}
@@ -180,7 +293,7 @@ render::ImageRgb8 Lab::frameAndCapture() {
 }
 
 render::ImageRgb8 Lab::renderOffscreen(int width, int height) const {
-    return render::renderOffscreen(*state_->renderer, state_->orbit.camera(), width, height, kBackground);
+    return render::renderOffscreen(*state_->patches, state_->orbit.camera(), width, height, kBackground);
 }
 
 render::Viewport Lab::sceneViewport() const { return state_->viewport; }
@@ -188,5 +301,18 @@ render::Camera Lab::camera() const { return state_->lastCamera; }
 void Lab::resetCamera() { state_->orbit.reset(); }
 const render::GlInfo& Lab::glInfo() const { return state_->gl; }
 void Lab::setPanelsVisible(bool visible) { state_->panelsVisible = visible; }
+std::uint64_t Lab::frameCount() const { return state_->frameCount; }
+std::shared_ptr<const Snapshot> Lab::snapshot() const { return state_->live.current; }
+void Lab::send(SolverCommand command) { state_->live.send(std::move(command)); }
+void Lab::pressKey(int glfwKey) { state_->onKey(glfwKey); }
+bool Lab::clickAt(const glm::dvec2& framebufferPixel) { return state_->pickAt(framebufferPixel); }
+std::optional<ProbeReading> Lab::probeReading() const { return state_->probePanel->reading(); }
+std::uint64_t Lab::probeGeneration() const { return state_->probePanel->readingGeneration(); }
+std::string Lab::editMaterial(std::size_t surface, const Rgb& reflectance, const Rgb& exitanceW_m2) {
+    return MaterialsPanel::submit(state_->live, surface, reflectance, exitanceW_m2);
+}
+render::DisplaySettings& Lab::display() { return state_->display; }
+std::string Lab::statusMessage() const { return state_->message; }
+void Lab::focusPanel(const std::string& title) { state_->sidebar.focus(title); }
 
 } // namespace radiant::app

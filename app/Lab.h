@@ -1,9 +1,19 @@
 #pragma once
-// The lab as an object the frame loop and the GL tests both drive: construct (opens the window),
-// frame() as often as wanted, read frames back, destroy (closes the window). GL-free header.
+// The lab as an object the frame loop and the GL tests both drive: construct (opens the window and
+// starts the solver thread), frame() as often as wanted, read frames back, destroy (closes the
+// window). GL-free header.
+#include <cstdint>
 #include <memory>
+#include <optional>
+#include <string>
+
+#include <glm/vec2.hpp>
 
 #include "app/LabApp.h"
+#include "app/solver/SolverCommand.h"
+#include "app/solver/Snapshot.h"
+#include "radiometry/probe/Probe.h"
+#include "render/DisplaySettings.h"
 #include "render/GlContext.h"
 #include "render/ImageRgb8.h"
 #include "render/camera/Camera.h"
@@ -12,7 +22,8 @@ namespace radiant::app {
 
 class Lab {
 public:
-    /// Opens the window on `options.scene`. Throws RadiantError (no display, no GL 3.3, bad scene).
+    /// Opens the window on `options.scene` and sends it to the solver thread. Throws RadiantError
+    /// (no display, no GL 3.3, bad scene).
     explicit Lab(const LabOptions& options);
     ~Lab();
     Lab(const Lab&) = delete;
@@ -21,7 +32,8 @@ public:
     [[nodiscard]] bool shouldClose() const;
     void requestClose();
 
-    /// Handles input, draws one frame and shows it.
+    /// Handles input, takes the newest snapshot (never waits for the solver), draws one frame and
+    /// shows it.
     void frame();
     /// As frame(), and returns the framebuffer as drawn (panels included when shown), top row first.
     render::ImageRgb8 frameAndCapture();
@@ -33,10 +45,32 @@ public:
     [[nodiscard]] render::Viewport sceneViewport() const;
     /// The camera the last frame was drawn with.
     [[nodiscard]] render::Camera camera() const;
-    /// Back to the Cornell camera (key C).
+    /// Back to the scene's home view (key C): the Cornell camera for the Cornell box.
     void resetCamera();
     [[nodiscard]] const render::GlInfo& glInfo() const;
     void setPanelsVisible(bool visible);
+
+    /// Frames drawn since the window opened.
+    [[nodiscard]] std::uint64_t frameCount() const;
+    /// The snapshot the last frame drew.
+    [[nodiscard]] std::shared_ptr<const Snapshot> snapshot() const;
+    /// Sends a command to the solver thread, as the panels do.
+    void send(SolverCommand command);
+    /// A key press as the keyboard gives it (GLFW key code): the shortcuts listed in the Info panel.
+    void pressKey(int glfwKey);
+    /// A left click at a framebuffer pixel (top-left origin), as a mouse click in the 3D view: picks
+    /// the probe point. False when the ray hits nothing.
+    bool clickAt(const glm::dvec2& framebufferPixel);
+    /// The probe's newest reading and the snapshot generation it was measured on (0: none yet).
+    [[nodiscard]] std::optional<ProbeReading> probeReading() const;
+    [[nodiscard]] std::uint64_t probeGeneration() const;
+    /// A material edit through the Materials panel's path; returns why it was refused, or empty.
+    std::string editMaterial(std::size_t surface, const Rgb& reflectance, const Rgb& exitanceW_m2);
+    [[nodiscard]] render::DisplaySettings& display();
+    /// The status bar's last message (e.g. where F12 saved the screenshot).
+    [[nodiscard]] std::string statusMessage() const;
+    /// Shows only the named panel expanded (screenshots of one panel); empty expands them all.
+    void focusPanel(const std::string& title);
 
 private:
     struct State;

@@ -12,6 +12,8 @@ struct LabOptions {
     bool visible = true;     ///< false: an offscreen window (tests that need no display output)
     bool vsync = true;
     float uiScale = 1.0f;    ///< ImGui text and spacing scale; RADIANT_UI_SCALE overrides it in runLab
+    double maxPatchArea = 0.01;  ///< m^2: 100 cm^2, a few hundred patches in the Cornell box
+    bool runOnStart = true;      ///< solve as soon as the form factors are ready; false waits for Run/Step
 };
 
 /// Opens the window and runs until it is closed. Returns the process exit status.

@@ -3,7 +3,6 @@
 #include <imgui.h>
 
 #include "app/ui/FrameStats.h"
-#include "app/ui/ImGuiLayer.h"
 
 namespace radiant::app {
 namespace {
@@ -42,20 +41,19 @@ void InfoPanel::draw() {
     ImGui::TextWrapped("%s", gl_.version.c_str());
 
     ImGui::Spacing();
-    if (!editingScale_) scaleSlider_ = ui_.uiScale();
-    ImGui::SetNextItemWidth(-ImGui::GetFontSize() * 4.5f);
-    // Applied when the slider is let go: rebuilding the font atlas under the cursor makes it jump.
-    ImGui::SliderFloat("UI scale", &scaleSlider_, 0.75f, 2.5f, "%.2fx");
-    editingScale_ = ImGui::IsItemActive();
-    if (ImGui::IsItemDeactivatedAfterEdit()) ui_.setUiScale(scaleSlider_);
-
-    ImGui::Spacing();
     ImGui::TextDisabled("Controls");
     control("Left drag", "orbit");
     control("Right/middle drag", "pan");
     control("Wheel", "zoom");
-    control("C", "home view");
+    control("Left click", "probe a point");
+    control("Space", "run / pause the solve");
+    control("N or Right", "one step (hold: repeat)");
+    control("R", "reset the solve");
+    control("F", "false colour on/off");
+    control("W", "patch wireframe on/off");
+    control("C", "home (Cornell) view");
     control("H", "hide/show panels");
+    control("F12", "screenshot to PNG");
     control("Esc", "quit");
 }
 

@@ -1,5 +1,6 @@
 #pragma once
-// Info: frame time and rate, the GL driver and context, the UI scale, and the controls.
+// Info: frame time and rate, the GL driver and context, and the mouse and keyboard controls.
+// (The UI scale lives in the Display panel.)
 #include <string>
 
 #include "app/panels/Panel.h"
@@ -8,12 +9,11 @@
 namespace radiant::app {
 
 class FrameStats;
-class ImGuiLayer;
 
 class InfoPanel final : public Panel {
 public:
-    InfoPanel(const FrameStats& frames, render::GlInfo gl, std::string fallbackNote, ImGuiLayer& ui)
-        : frames_(frames), gl_(std::move(gl)), fallbackNote_(std::move(fallbackNote)), ui_(ui) {}
+    InfoPanel(const FrameStats& frames, render::GlInfo gl, std::string fallbackNote)
+        : frames_(frames), gl_(std::move(gl)), fallbackNote_(std::move(fallbackNote)) {}
 
     [[nodiscard]] const char* title() const override { return "Info"; }
     void draw() override;
@@ -22,9 +22,6 @@ private:
     const FrameStats& frames_;
     render::GlInfo gl_;
     std::string fallbackNote_;
-    ImGuiLayer& ui_;
-    float scaleSlider_ = 1.0f;
-    bool editingScale_ = false;
 };
 
 } // namespace radiant::app

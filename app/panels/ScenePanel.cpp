@@ -3,18 +3,14 @@
 #include <imgui.h>
 
 #include <cmath>
-#include <cstring>
-#include <filesystem>
 
-#include "radiometry/common/Error.h"
+#include "app/ui/Colours.h"
 #include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
 namespace {
 
 constexpr double kCm2PerM2 = 1e4;
-const ImVec4 kErrorRed{0.96f, 0.42f, 0.40f, 1.0f};
-const ImVec4 kWarningAmber{0.95f, 0.75f, 0.35f, 1.0f};
 
 void row(const char* label, const char* format, auto... values) {
     ImGui::TextDisabled("%s", label);
@@ -24,15 +20,13 @@ void row(const char* label, const char* format, auto... values) {
 
 } // namespace
 
-ScenePanel::ScenePanel(Install install, Scene initial, double maxPatchArea)
-    : install_(std::move(install)), scene_(std::move(initial)), maxPatchArea_(maxPatchArea),
-      sliderAreaCm2_(static_cast<float>(maxPatchArea * kCm2PerM2)), builtins_(builtinSceneNames()) {
-    job_.start("meshing " + scene_.name, remesh(scene_, maxPatchArea_));
-}
+ScenePanel::ScenePanel(LiveSolve& live, double maxPatchArea)
+    : live_(live), maxPatchArea_(maxPatchArea), sliderAreaCm2_(static_cast<float>(maxPatchArea * kCm2PerM2)),
+      builtins_(builtinSceneNames()) {}
 
 void ScenePanel::open(const std::string& nameOrPath) {
     error_.clear();
-    job_.start("loading " + nameOrPath, loadAndMesh(nameOrPath, static_cast<double>(sliderAreaCm2_) / kCm2PerM2));
+    job_.start(nameOrPath);
 }
 
 void ScenePanel::update() {
@@ -40,27 +34,30 @@ void ScenePanel::update() {
     if (!result) return;
     if (!result->scene) {
         error_ = result->error;  // the previous scene stays
-        sliderAreaCm2_ = static_cast<float>(maxPatchArea_ * kCm2PerM2);
         return;
     }
     error_.clear();
     warnings_ = std::move(result->warnings);
-    scene_ = std::move(*result->scene);
-    patchCount_ = result->mesh.size();
-    maxPatchArea_ = result->maxPatchArea;
-    install_(scene_, result->mesh);
+    live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{maxPatchArea_}});
 }
 
 void ScenePanel::draw() {
-    row("Scene", "%s", scene_.name.c_str());
-    row("Surfaces", "%zu  (%zu faces)", scene_.surfaces.size(), scene_.faceCount());
-    row("Patches", "%zu", patchCount_);
-    row("Area", "%.3f m\xC2\xB2", scene_.totalArea());
+    const Snapshot& snapshot = live_.snapshot();
+    if (snapshot.scene) {
+        const Scene& scene = *snapshot.scene;
+        row("Scene", "%s", scene.name.c_str());
+        row("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
+        row("Patches", "%zu", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
+        row("Area", "%.3f m\xC2\xB2", scene.totalArea());
+    } else {
+        ImGui::TextDisabled("no scene loaded");
+    }
 
     ImGui::Spacing();
     ImGui::TextDisabled("Built-in scenes");
+    const std::string current = snapshot.scene ? snapshot.scene->name : std::string();
     for (const std::string& name : builtins_)
-        if (ImGui::Selectable(name.c_str(), name == scene_.name) && name != scene_.name) open(name);
+        if (ImGui::Selectable(name.c_str(), name == current) && name != current) open(name);
 
     ImGui::Spacing();
     ImGui::TextDisabled("glTF file (or drop one on the window)");
@@ -75,17 +72,16 @@ void ScenePanel::draw() {
     if (job_.running()) {
         ImGui::Spacing();
         ImGui::TextUnformatted(job_.what().c_str());
-        ImGui::ProgressBar(static_cast<float>(job_.fraction()), {-ImGui::GetFontSize() * 4.5f, 0});
-        ImGui::SameLine();
-        if (ImGui::Button("Cancel")) job_.cancel();
     }
-    if (!error_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kErrorRed);
-        ImGui::TextWrapped("%s", error_.c_str());
-        ImGui::PopStyleColor();
-    }
+    // A failed load, and a failed re-mesh (over the patch budget), both keep the previous scene.
+    for (const std::string* message : {static_cast<const std::string*>(&error_), &snapshot.error})
+        if (!message->empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
+            ImGui::TextWrapped("%s", message->c_str());
+            ImGui::PopStyleColor();
+        }
     if (!warnings_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, kWarningAmber);
+        ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
         for (const std::string& warning : warnings_) ImGui::TextWrapped("%s", warning.c_str());
         ImGui::PopStyleColor();
     }
@@ -99,15 +95,15 @@ void ScenePanel::drawMeshing() {
     ImGui::SliderFloat("##maxPatchArea", &sliderAreaCm2_, 1.0f, 2500.0f, "%.1f cm\xC2\xB2",
                        ImGuiSliderFlags_Logarithmic | ImGuiSliderFlags_AlwaysClamp);
     const double requested = static_cast<double>(sliderAreaCm2_) / kCm2PerM2;
-    if (ImGui::IsItemActive()) {
-        const std::size_t estimate = estimatePatchCount(scene_, MeshingOptions{requested});
+    const Snapshot& snapshot = live_.snapshot();
+    if (ImGui::IsItemActive() && snapshot.scene) {
+        const std::size_t estimate = estimatePatchCount(*snapshot.scene, MeshingOptions{requested});
         ImGui::SetTooltip("about %zu patches", estimate);
     }
     if (ImGui::IsItemDeactivatedAfterEdit() && std::abs(requested - maxPatchArea_) > 1e-12) {
-        error_.clear();
-        job_.start("meshing " + scene_.name, remesh(scene_, requested));
+        maxPatchArea_ = requested;
+        live_.send(command::Remesh{MeshingOptions{requested}});
     }
-    ImGui::Checkbox("Show patch wireframe", &showWireframe_);
 }
 
 } // namespace radiant::app

@@ -36,6 +36,7 @@ struct SolverThread::State {
     std::vector<IterationStats> history;
     std::uint64_t generation = 0;
     std::uint64_t meshGeneration = 0;
+    std::uint64_t solverBuilds = 0;
     std::string error;
     std::string notice;
     std::chrono::steady_clock::time_point lastPublish{};
@@ -234,6 +235,7 @@ void SolverThread::ensureSolver(State& state) {
     state.solver.reset();
     state.solverScene = state.scene;
     state.solverMesh = state.mesh;
+    ++state.solverBuilds;
     state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options_, &progress_);
     activity_.store(SolverActivity::Idle);
 }
@@ -269,6 +271,8 @@ void SolverThread::publish(State& state) {
     s->tolerance = state.tolerance;
     s->error = state.error;
     s->notice = state.notice;
+    s->solverBuilds = state.solverBuilds;
+    s->meshing = state.meshing;
     published_.store(std::shared_ptr<const Snapshot>(std::move(s)));
     state.lastPublish = std::chrono::steady_clock::now();
 }

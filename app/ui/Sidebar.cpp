@@ -21,6 +21,7 @@ float Sidebar::draw(const std::string& heading, const std::string& subheading) {
     ImGui::Spacing();
     for (const auto& panel : panels_) {
         const ImGuiTreeNodeFlags headerFlags = panel->openByDefault() ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+        if (focusPending_) ImGui::SetNextItemOpen(focus_.empty() || focus_ == panel->title());
         if (ImGui::CollapsingHeader(panel->title(), headerFlags)) {
             ImGui::PushID(panel.get());
             ImGui::Indent(ImGui::GetStyle().IndentSpacing * 0.25f);
@@ -30,6 +31,7 @@ float Sidebar::draw(const std::string& heading, const std::string& subheading) {
             ImGui::Spacing();
         }
     }
+    focusPending_ = false;
     ImGui::End();
     return width;
 }

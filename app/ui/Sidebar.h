@@ -3,6 +3,7 @@
 // 3D view keeps the rest of the window to itself and nothing floats over the box.
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/panels/Panel.h"
@@ -18,9 +19,16 @@ public:
     }
     /// Draws the sidebar; returns its width in ImGui (window) coordinates.
     float draw(const std::string& heading, const std::string& subheading);
+    /// At the next draw, expands the panel titled `title` and collapses the others (empty: expand all).
+    void focus(std::string title) {
+        focus_ = std::move(title);
+        focusPending_ = true;
+    }
 
 private:
     std::vector<std::unique_ptr<Panel>> panels_;
+    std::string focus_;
+    bool focusPending_ = false;
 };
 
 } // namespace radiant::app

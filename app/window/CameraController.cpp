@@ -3,6 +3,8 @@
 #include <imgui.h>
 #include <numbers>
 
+#include <glm/geometric.hpp>
+
 namespace radiant::app {
 
 void CameraController::update(render::OrbitCamera& camera, const render::Viewport& view) {
@@ -11,10 +13,22 @@ void CameraController::update(render::OrbitCamera& camera, const render::Viewpor
                           io.MousePos.x < static_cast<float>(view.x + view.width) &&
                           io.MousePos.y >= static_cast<float>(view.y) &&
                           io.MousePos.y < static_cast<float>(view.y + view.height);
-    if (dragButton_ >= 0 && !io.MouseDown[dragButton_]) dragButton_ = -1;
+    click_.reset();
+    const glm::dvec2 mouse(io.MousePos.x, io.MousePos.y);
+    if (dragButton_ >= 0 && !io.MouseDown[dragButton_]) {
+        if (dragButton_ == 0 && !dragged_) click_ = pressedAt_;
+        dragButton_ = -1;
+    }
     if (dragButton_ < 0 && overView && !io.WantCaptureMouse)
         for (int button = 0; button < 3; ++button)
-            if (io.MouseClicked[button]) dragButton_ = button;
+            if (io.MouseClicked[button]) {
+                dragButton_ = button;
+                pressedAt_ = mouse;
+                dragged_ = false;
+            }
+    // A hand on a projector clicker wobbles a few pixels; more than that is an orbit, not a pick.
+    constexpr double kClickSlop = 4.0;
+    if (dragButton_ == 0 && glm::length(mouse - pressedAt_) > kClickSlop) dragged_ = true;
 
     if (dragButton_ >= 0) {
         const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;

@@ -109,6 +109,33 @@ TEST_CASE("a material edit reaches the solver and the published scene, and reset
     CHECK(snapshot->radiosity.front().x == doctest::Approx(2.0 * (1 - std::pow(0.25, 3)) / 0.75));
 }
 
+TEST_CASE("materials edits keep the solver (no new form factors), while a new method or mesh builds one") {
+    std::atomic<int> factoryCalls{0};
+    SolverFactory counting = [&](SolverMethod method, const Scene&, const PatchMesh& mesh, const SolverOptions&,
+                                 Progress*) -> std::unique_ptr<Solver> {
+        ++factoryCalls;
+        return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), 0.5, 1.0);
+    };
+    SolverThread thread({}, counting);
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->solverBuilds == 1);
+    CHECK(thread.snapshot()->meshing.maxPatchArea == 0.25);
+    for (int i = 0; i < 3; ++i) thread.send(command::SetMaterial{0, Rgb(0.1 * i), ExitanceRgb(Rgb(1.0))});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->solverBuilds == 1);
+    CHECK(factoryCalls.load() == 1);
+    thread.send(command::SetMethod{SolverMethod::Jacobi});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->solverBuilds == 2);
+    thread.send(command::Remesh{MeshingOptions{0.0625, 1000}});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->solverBuilds == 3);
+    CHECK(thread.snapshot()->mesh->size() == 16);
+    CHECK(factoryCalls.load() == 3);
+}
+
 TEST_CASE("a new method cancels a form-factor computation in progress") {
     std::atomic<int> builds{0};
     std::atomic<int> cancelled{0};

@@ -1,0 +1,156 @@
+#include "app/panels/MaterialsPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "app/ui/Colours.h"
+
+namespace radiant::app {
+namespace {
+
+const Material& materialOf(const Scene& scene, std::size_t surface) {
+    return scene.materials.at(scene.surfaces.at(surface).material);
+}
+
+ImVec4 swatch(const Material& material) {
+    // Emitters show their exitance's chromaticity, everything else its reflectance.
+    Rgb c = material.reflectance;
+    if (material.emits()) {
+        const Rgb& e = material.exitance.value();
+        c = e / std::max({e.x, e.y, e.z});
+    }
+    return {static_cast<float>(c.x), static_cast<float>(c.y), static_cast<float>(c.z), 1.0f};
+}
+
+} // namespace
+
+void MaterialsPanel::draw() {
+    const Snapshot& snapshot = live_.snapshot();
+    if (!snapshot.scene || snapshot.scene->surfaces.empty()) {
+        ImGui::TextDisabled("no scene loaded");
+        return;
+    }
+    const Scene& scene = *snapshot.scene;
+    if (snapshot.meshGeneration != shownMesh_ || selected_ >= scene.surfaces.size()) {
+        shownMesh_ = snapshot.meshGeneration;
+        selected_ = 0;
+        editing_ = false;
+        refusal_.clear();
+    }
+    if (!editing_) loadFrom(scene);
+    drawSurfaceList(scene);
+    drawEditor(scene);
+}
+
+void MaterialsPanel::drawSurfaceList(const Scene& scene) {
+    ImGui::TextDisabled("Surfaces");
+    const float rows = static_cast<float>(std::min<std::size_t>(scene.surfaces.size(), 7));
+    const float height = rows * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().FramePadding.y * 2.0f;
+    if (ImGui::BeginListBox("##surfaces", {-1, height})) {
+        for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+            ImGui::PushID(static_cast<int>(s));
+            const Material& material = materialOf(scene, s);
+            ImGui::ColorButton("##swatch", swatch(material), ImGuiColorEditFlags_NoTooltip | ImGuiColorEditFlags_NoBorder,
+                               {ImGui::GetFontSize(), ImGui::GetFontSize()});
+            ImGui::SameLine();
+            const std::string label = scene.surfaces[s].name + (material.emits() ? "  (emitter)" : "");
+            if (ImGui::Selectable(label.c_str(), s == selected_)) {
+                selected_ = s;
+                editing_ = false;
+                refusal_.clear();
+                loadFrom(scene);
+            }
+            ImGui::PopID();
+        }
+        ImGui::EndListBox();
+    }
+}
+
+void MaterialsPanel::loadFrom(const Scene& scene) {
+    const Material& material = materialOf(scene, selected_);
+    for (int band = 0; band < 3; ++band) {
+        reflectance_[band] = static_cast<float>(material.reflectance[band]);
+        exitance_[band] = static_cast<float>(material.exitance.value()[band]);
+    }
+}
+
+void MaterialsPanel::drawEditor(const Scene& scene) {
+    ImGui::Spacing();
+    ImGui::Text("%s", scene.surfaces[selected_].name.c_str());
+    ImGui::SameLine();
+    ImGui::TextDisabled("%.4f m\xC2\xB2", scene.surfaces[selected_].area());
+
+    bool changed = false;
+    bool committed = false;
+    ImGui::TextDisabled("Reflectance (per band, 0 to %.3f)", kMaxReflectance);
+    ImGui::SetNextItemWidth(-1);
+    // The picker's own numbers are bounded to [0, 1]; typing a value of 1 or more is caught below.
+    changed |= ImGui::ColorEdit3("##reflectance", reflectance_.data(), ImGuiColorEditFlags_Float);
+    committed |= ImGui::IsItemDeactivatedAfterEdit();
+    const float labelWidth = ImGui::CalcTextSize("W/m\xC2\xB2").x + ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::SetNextItemWidth(-labelWidth);
+    changed |= ImGui::InputFloat3("##rhoNumbers", reflectance_.data(), "%.3f");
+    committed |= ImGui::IsItemDeactivatedAfterEdit();
+
+    ImGui::TextDisabled("Exitance (per band, \xE2\x89\xA5 0)");
+    ImGui::SetNextItemWidth(-labelWidth);
+    changed |= ImGui::InputFloat3("##exitance", exitance_.data(), "%.2f");
+    committed |= ImGui::IsItemDeactivatedAfterEdit();
+    ImGui::SameLine(0, ImGui::GetStyle().ItemInnerSpacing.x);
+    ImGui::TextUnformatted("W/m\xC2\xB2");
+    const Rgb e(exitance_[0], exitance_[1], exitance_[2]);
+    ImGui::TextDisabled("Emitted power");
+    ImGui::SameLine();
+    const double area = scene.surfaces[selected_].area();
+    ImGui::Text("%.3g, %.3g, %.3g W", e.x * area, e.y * area, e.z * area);
+
+    if (changed) {
+        editing_ = true;
+        apply();
+    }
+    // Once the field is let go the panel follows the snapshot again (it holds what was applied).
+    if (committed && refusal_.empty()) editing_ = false;
+    if (!refusal_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
+        ImGui::TextWrapped("%s", refusal_.c_str());
+        ImGui::PopStyleColor();
+        if (ImGui::SmallButton("Revert")) {
+            editing_ = false;
+            refusal_.clear();
+        }
+    }
+}
+
+void MaterialsPanel::apply() {
+    const Rgb rho(reflectance_[0], reflectance_[1], reflectance_[2]);
+    const Rgb e(exitance_[0], exitance_[1], exitance_[2]);
+    refusal_ = submit(live_, selected_, rho, e);
+}
+
+std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const Rgb& reflectance,
+                                   const Rgb& exitanceW_m2) {
+    static constexpr const char* kBands[] = {"red", "green", "blue"};
+    char message[200];
+    for (int band = 0; band < 3; ++band) {
+        if (!(reflectance[band] >= 0.0) || reflectance[band] > kMaxReflectance) {
+            std::snprintf(message, sizeof message,
+                          "Reflectance %s = %.3f is outside [0, %.3f]: a surface cannot reflect all the light "
+                          "it receives. Not applied.",
+                          kBands[band], reflectance[band], kMaxReflectance);
+            return message;
+        }
+        if (!(exitanceW_m2[band] >= 0.0)) {
+            std::snprintf(message, sizeof message, "Exitance %s = %.2f W/m\xC2\xB2 is negative. Not applied.",
+                          kBands[band], exitanceW_m2[band]);
+            return message;
+        }
+    }
+    live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2)});
+    // The solve picks up from its current solution with the new material (no new form factors).
+    live.send(command::Run{});
+    return {};
+}
+
+} // namespace radiant::app

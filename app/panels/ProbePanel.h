@@ -1,0 +1,82 @@
+#pragma once
+// Probe: what a small detector at the clicked point would read - B, L = B/pi, the irradiance E
+// gathered at that exact point, the reflectance, and for a chosen target surface its solid angle,
+// projected solid angle and form factor (radiometry/probe/Probe.h). The readings follow the solve:
+// they are recomputed on a worker when a newer snapshot arrives, at most a few times a second.
+#include <chrono>
+#include <cstdint>
+#include <future>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "app/panels/Panel.h"
+#include "app/solver/LiveSolve.h"
+#include "radiometry/probe/Probe.h"
+
+namespace radiant {
+class RayCaster;
+}
+
+namespace radiant::app {
+
+/// A point picked on the scene: a ray hit, kept while the mesh it was picked on is shown.
+struct ProbePick {
+    glm::dvec3 point{0.0};       ///< metres
+    glm::dvec3 normal{0, 0, 1};  ///< unit, the face's front side
+    std::uint32_t surface = 0;
+    std::uint64_t meshGeneration = 0;
+};
+
+class ProbePanel final : public Panel {
+public:
+    explicit ProbePanel(LiveSolve& live);
+    ~ProbePanel() override;
+
+    [[nodiscard]] const char* title() const override { return "Probe"; }
+    void update() override;
+    void draw() override;
+
+    /// Casts the ray into the current scene and probes the nearest hit; false when it hits nothing.
+    bool pick(const glm::dvec3& origin, const glm::dvec3& direction);
+    [[nodiscard]] const std::optional<ProbePick>& picked() const { return pick_; }
+    /// The newest finished reading and the snapshot generation it was measured on.
+    [[nodiscard]] const std::optional<ProbeReading>& reading() const { return reading_; }
+    [[nodiscard]] std::uint64_t readingGeneration() const { return readingGeneration_; }
+    /// Chooses the target surface by index (the combo does this too).
+    void setTarget(std::size_t surface);
+
+    /// Readings are refreshed at most this often while the solve runs.
+    static constexpr std::chrono::milliseconds kRefreshInterval{250};
+
+private:
+    /// What the worker hands back: a reading, or why there is none.
+    struct Measured {
+        std::optional<ProbeReading> reading;
+        std::string error;
+        std::uint64_t generation = 0;
+        double seconds = 0;
+    };
+    struct Picker;
+    void startMeasuring(std::chrono::steady_clock::time_point now);
+    void drawReadings(const Scene& scene, const ProbeReading& reading);
+    void drawTarget(const Scene& scene);
+
+    LiveSolve& live_;
+    std::shared_ptr<const Picker> picker_;  ///< ray caster of the shown scene's geometry
+    std::optional<ProbePick> pick_;
+    std::optional<std::size_t> target_;
+    std::uint64_t targetMesh_ = 0;  ///< mesh generation target_ was chosen for
+    std::optional<ProbeReading> reading_;
+    std::uint64_t readingGeneration_ = 0;
+    std::string error_;
+    double measureSeconds_ = 0;
+    bool dirty_ = false;  ///< the pick or target changed since the last measurement started
+    std::future<Measured> job_;
+    std::uint64_t jobGeneration_ = 0;
+    std::chrono::steady_clock::time_point lastStart_{};
+};
+
+} // namespace radiant::app

@@ -1,0 +1,131 @@
+#include "app/panels/SolverPanel.h"
+
+#include <imgui.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+
+#include "app/solver/MethodLabel.h"
+#include "app/ui/Colours.h"
+
+namespace radiant::app {
+namespace {
+
+constexpr std::array kMethods{SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
+                              SolverMethod::Hierarchical, SolverMethod::Importance};
+
+bool shoots(SolverMethod method) { return method == SolverMethod::Progressive; }
+bool links(SolverMethod method) {
+    return method == SolverMethod::Hierarchical || method == SolverMethod::Importance;
+}
+
+void row(const char* label, const char* format, auto... values) {
+    ImGui::TextDisabled("%s", label);
+    ImGui::SameLine(ImGui::GetFontSize() * 7.0f);
+    ImGui::Text(format, values...);
+}
+
+double total(const PowerRgb& power) {
+    const Rgb& p = power.value();
+    return p.x + p.y + p.z;
+}
+
+} // namespace
+
+void SolverPanel::draw() {
+    const Snapshot& snapshot = live_.snapshot();
+    drawControls(snapshot);
+    drawStats(snapshot);
+    drawPlots(snapshot);
+}
+
+void SolverPanel::drawControls(const Snapshot& snapshot) {
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::BeginCombo("##method", methodLabel(snapshot.method))) {
+        for (const SolverMethod method : kMethods)
+            if (ImGui::Selectable(methodLabel(method), method == snapshot.method) && method != snapshot.method)
+                live_.send(command::SetMethod{method});
+        ImGui::EndCombo();
+    }
+
+    const float buttonWidth = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
+    if (ImGui::Button(snapshot.running ? "Pause" : "Run", {buttonWidth, 0}))
+        live_.send(snapshot.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
+    ImGui::SameLine();
+    if (ImGui::Button("Step", {buttonWidth, 0})) live_.send(command::Step{1});
+    ImGui::SameLine();
+    if (ImGui::Button("Reset", {buttonWidth, 0})) live_.send(command::Reset{});
+
+    char label[32];
+    std::snprintf(label, sizeof label, "Step %d", stepCount_);
+    if (ImGui::Button(label, {buttonWidth, 0})) live_.send(command::Step{static_cast<std::size_t>(stepCount_)});
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(-1);
+    if (ImGui::InputInt("##stepCount", &stepCount_, 1, 10)) stepCount_ = std::clamp(stepCount_, 1, 100000);
+
+    if (!editingTolerance_) toleranceExponent_ = static_cast<float>(std::log10(snapshot.tolerance));
+    const float textWidth = ImGui::CalcTextSize("Tolerance").x + ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::SetNextItemWidth(-textWidth);
+    char shown[32];
+    std::snprintf(shown, sizeof shown, "%.0e", std::pow(10.0, static_cast<double>(toleranceExponent_)));
+    ImGui::SliderFloat("Tolerance", &toleranceExponent_, -8.0f, -1.0f, shown);
+    editingTolerance_ = ImGui::IsItemActive();
+    if (ImGui::IsItemDeactivatedAfterEdit())
+        live_.send(command::SetTolerance{std::pow(10.0, static_cast<double>(toleranceExponent_))});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Run stops when the relative residual falls below this");
+}
+
+void SolverPanel::drawStats(const Snapshot& snapshot) {
+    ImGui::Spacing();
+    const IterationStats& stats = snapshot.stats;
+    const bool converged = !snapshot.running && stats.iteration > 0 && stats.residual < snapshot.tolerance;
+    row("State", "%s", snapshot.running ? "running" : converged ? "converged" : stats.iteration > 0 ? "paused" : "ready");
+    row("Iteration", "%zu", stats.iteration);
+    row("Residual", "%.3e", stats.iteration > 0 ? stats.residual : 1.0);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("max over bands of sum A|B - E - rho F B| / sum A E (dimensionless)");
+    if (shoots(snapshot.method)) {
+        row("Unshot power", "%.4g W", total(stats.unshotPower));
+        if (stats.shooter >= 0) row("Last shooter", "patch %lld", static_cast<long long>(stats.shooter));
+    }
+    if (links(snapshot.method)) row("Links", "%zu  (+%zu this step)", stats.links, stats.linksRefined);
+    row("Step time", "%.3f ms", stats.seconds * 1e3);
+    if (!snapshot.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
+        ImGui::TextWrapped("%s", snapshot.error.c_str());
+        ImGui::PopStyleColor();
+    }
+}
+
+void SolverPanel::drawPlots(const Snapshot& snapshot) {
+    const std::vector<IterationStats>& history = snapshot.history;
+    if (history.empty()) return;
+    // Long runs (thousands of shots) are thinned to what the plot's width can show.
+    const std::size_t stride = std::max<std::size_t>(1, history.size() / 512);
+    const float width = ImGui::GetContentRegionAvail().x;
+    const float height = ImGui::GetFontSize() * 4.0f;
+    auto plot = [&](const char* id, const char* axis, auto value) {
+        plotValues_.clear();
+        for (std::size_t i = 0; i < history.size(); i += stride) plotValues_.push_back(value(history[i]));
+        const auto [lo, hi] = std::minmax_element(plotValues_.begin(), plotValues_.end());
+        ImGui::Spacing();
+        ImGui::TextDisabled("%s", axis);
+        char overlay[64];
+        std::snprintf(overlay, sizeof overlay, "%.3g .. %.3g", static_cast<double>(*lo), static_cast<double>(*hi));
+        ImGui::PlotLines(id, plotValues_.data(), static_cast<int>(plotValues_.size()), 0, overlay, *lo,
+                         *hi > *lo ? *hi : *lo + 1.0f, {width, height});
+    };
+    auto log10Of = [](double v) { return static_cast<float>(std::log10(std::max(v, 1e-300))); };
+    plot("##residual", "log10 residual  vs  iteration", [&](const IterationStats& s) { return log10Of(s.residual); });
+    if (shoots(snapshot.method))
+        plot("##unshot", "log10 unshot power (W)  vs  iteration",
+             [&](const IterationStats& s) { return log10Of(total(s.unshotPower)); });
+    plot("##time", "time per iteration (ms)  vs  iteration",
+         [](const IterationStats& s) { return static_cast<float>(s.seconds * 1e3); });
+    ImGui::TextDisabled("iteration 1 .. %zu  (left to right)", history.size());
+}
+
+} // namespace radiant::app

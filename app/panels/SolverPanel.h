@@ -1,0 +1,30 @@
+#pragma once
+// Solver: the method, Run/Pause, Step, Step N, Reset and the tolerance; the last step's numbers
+// (iteration, residual, unshot power, links, time) and their history plotted against iteration.
+#include <vector>
+
+#include "app/panels/Panel.h"
+#include "app/solver/LiveSolve.h"
+
+namespace radiant::app {
+
+class SolverPanel final : public Panel {
+public:
+    explicit SolverPanel(LiveSolve& live) : live_(live) {}
+
+    [[nodiscard]] const char* title() const override { return "Solver"; }
+    void draw() override;
+
+private:
+    void drawControls(const Snapshot& snapshot);
+    void drawStats(const Snapshot& snapshot);
+    void drawPlots(const Snapshot& snapshot);
+
+    LiveSolve& live_;
+    int stepCount_ = 10;
+    float toleranceExponent_ = -4.0f;  ///< log10 of the tolerance, as the slider shows it
+    bool editingTolerance_ = false;
+    std::vector<float> plotValues_;    ///< scratch for PlotLines
+};
+
+} // namespace radiant::app

@@ -1,0 +1,262 @@
+// The real lab under Xvfb: the solve streams into the 3D view while frames keep coming, a click
+// probes the scene like `radiant probe` does, and a materials edit recolours a wall without new
+// form factors.
+#include <doctest/doctest.h>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <memory>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/Lab.h"
+#include "app/solver/SolverThread.h"
+#include "radiometry/units/Quantity.h"
+#include "render/camera/Camera.h"
+
+using namespace radiant;
+using radiant::app::Lab;
+using radiant::app::LabOptions;
+namespace command = radiant::app::command;
+
+namespace {
+
+constexpr double kCoarsePatchArea = 0.05;  // m^2: about a hundred patches, form factors in well under a second
+
+void requireDisplay() {
+    const char* display = std::getenv("DISPLAY");
+    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
+}
+
+LabOptions coarseCornell() {
+    LabOptions options;
+    options.scene = "cornell-box";
+    options.width = 640;
+    options.height = 480;
+    options.showPanels = false;  // the 3D view fills the window
+    options.vsync = false;
+    options.maxPatchArea = kCoarsePatchArea;
+    options.runOnStart = false;
+    return options;
+}
+
+/// Draws frames until `done` holds; fails the test after `seconds`.
+void frameUntil(Lab& lab, const std::function<bool(const app::Snapshot&)>& done, double seconds = 60) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < deadline) {
+        lab.frame();
+        if (done(*lab.snapshot())) return;
+    }
+    const app::Snapshot& s = *lab.snapshot();
+    FAIL("the lab did not reach the expected state within " << seconds << " s: generation " << s.generation
+         << ", patches " << (s.mesh ? s.mesh->size() : 0) << ", solver builds " << s.solverBuilds << ", iteration "
+         << s.stats.iteration << ", running " << s.running << ", error '" << s.error << "'");
+}
+
+void waitForSolver(Lab& lab) {
+    frameUntil(lab, [](const app::Snapshot& s) { return s.mesh && s.solverBuilds >= 1 && !s.running; });
+}
+
+double meanBrightness(const render::ImageRgb8& image) {
+    double sum = 0;
+    for (const std::uint8_t v : image.pixels) sum += v;
+    return sum / static_cast<double>(image.pixels.size());
+}
+
+/// Mean colour (0..255 per channel) of a (2r+1)^2 block of pixels around `centre`.
+glm::dvec3 meanColour(const render::ImageRgb8& image, const glm::dvec3& centre, int r = 4) {
+    glm::dvec3 sum(0.0);
+    int count = 0;
+    const int cx = static_cast<int>(centre.x), cy = static_cast<int>(centre.y);
+    for (int y = cy - r; y <= cy + r; ++y)
+        for (int x = cx - r; x <= cx + r; ++x) {
+            const std::size_t i = (static_cast<std::size_t>(y) * static_cast<std::size_t>(image.width) +
+                                   static_cast<std::size_t>(x)) * 3;
+            sum += glm::dvec3(image.pixels[i], image.pixels[i + 1], image.pixels[i + 2]);
+            ++count;
+        }
+    return sum / static_cast<double>(count);
+}
+
+std::string runCommand(const std::string& commandLine) {
+    std::unique_ptr<FILE, int (*)(FILE*)> pipe(popen(commandLine.c_str(), "r"), pclose);
+    REQUIRE(pipe);
+    std::string out;
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe.get())) out.append(buffer, n);
+    return out;
+}
+
+void checkClose(const nlohmann::json& expected, const Rgb& actual, double relative, const char* what) {
+    for (int band = 0; band < 3; ++band) {
+        const double e = expected.at(static_cast<std::size_t>(band)).get<double>();
+        INFO(what << " band " << band << ": radiant probe " << e << ", lab " << actual[band]);
+        CHECK(std::abs(actual[band] - e) <= relative * std::abs(e) + 1e-9);
+    }
+}
+
+} // namespace
+
+TEST_SUITE("gl lab") {
+
+TEST_CASE("the view brightens as the solve advances, and frames keep coming while it runs") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    waitForSolver(lab);
+    CHECK(lab.snapshot()->method == SolverMethod::GaussSeidel);
+
+    // A fixed false-colour range, so brightness follows radiosity (tone mapping adapts its exposure).
+    lab.send(command::Step{1});
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 1; });
+    double firstMax = 0;
+    const app::Snapshot& first = *lab.snapshot();
+    for (std::size_t p = 0; p < first.mesh->size(); ++p) {
+        const Surface& surface = first.scene->surfaces[first.mesh->patches[p].surface];
+        if (!first.scene->materials[surface.material].emits())
+            firstMax = std::max(firstMax, first.radiosity[p].x + first.radiosity[p].y + first.radiosity[p].z);
+    }
+    REQUIRE(firstMax > 0);
+    lab.display().colourMode = render::ColourMode::FalseColour;
+    lab.display().falseColourMaxW_m2 = static_cast<float>(firstMax * 3.0);
+
+    lab.send(command::Reset{});
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 0 && s.history.empty(); });
+    const double emitted = meanBrightness(lab.frameAndCapture());
+    double previous = emitted;
+    for (const std::size_t iteration : {1u, 2u, 4u}) {
+        lab.send(command::Step{iteration - lab.snapshot()->stats.iteration});
+        frameUntil(lab, [&](const app::Snapshot& s) { return s.stats.iteration == iteration && !s.running; });
+        const double brightness = meanBrightness(lab.frameAndCapture());
+        INFO("iteration " << iteration << ": mean " << brightness << ", before " << previous);
+        CHECK(brightness > previous);
+        previous = brightness;
+    }
+    CHECK(previous > emitted + 2.0);  // clearly visible, not rounding noise
+
+    // A long run: progressive refinement on a finer mesh, to a tolerance it needs many shots for.
+    lab.send(command::Remesh{MeshingOptions{kCoarsePatchArea / 8}});
+    lab.send(command::SetMethod{SolverMethod::Progressive});
+    lab.send(command::SetTolerance{1e-14});
+    lab.send(command::Run{});
+    frameUntil(lab, [](const app::Snapshot& s) { return s.running && s.stats.iteration > 0; });
+    const std::uint64_t framesBefore = lab.frameCount();
+    const std::uint64_t generationBefore = lab.snapshot()->generation;
+    std::uint64_t framesWhileRunning = 0;
+    for (int i = 0; i < 40 && lab.snapshot()->running; ++i) {
+        lab.frame();
+        if (lab.snapshot()->running) ++framesWhileRunning;
+    }
+    INFO("iteration reached " << lab.snapshot()->stats.iteration);
+    CHECK(framesWhileRunning >= 10);
+    CHECK(lab.frameCount() >= framesBefore + framesWhileRunning);
+    CHECK(lab.snapshot()->generation > generationBefore);  // the frames showed new solutions
+    lab.send(command::Pause{});
+}
+
+TEST_CASE("a click on the floor probes the point as `radiant probe` does with the same solver settings") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    // Both solves stop at the first Gauss-Seidel sweep whose relative residual is under this; each
+    // is then within about tolerance / (1 - rho_max) of the exact solution, so they agree to 1e-4.
+    constexpr double kTolerance = 1e-7;
+    constexpr double kAgreement = 1e-4;
+    lab.send(command::SetTolerance{kTolerance});
+    lab.send(command::Run{});
+    waitForSolver(lab);
+    frameUntil(lab, [](const app::Snapshot& s) { return !s.running && s.stats.iteration > 0; });
+    REQUIRE(lab.snapshot()->stats.residual < kTolerance);
+
+    const glm::dvec3 floorPoint{0.42, 0.0, 0.12};  // in front of the tall block, seen by the Cornell camera
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
+    REQUIRE(lab.clickAt({pixel.x, pixel.y}));
+    const std::uint64_t solved = lab.snapshot()->generation;
+    frameUntil(lab, [&](const app::Snapshot&) { return lab.probeGeneration() == solved && lab.probeReading(); }, 30);
+    const ProbeReading reading = *lab.probeReading();
+    const Scene& scene = *lab.snapshot()->scene;
+    CHECK(scene.surfaces[reading.at.surface].name == "floor");
+    CHECK(reading.at.point.x == doctest::Approx(floorPoint.x).epsilon(1e-3));
+    CHECK(reading.at.point.z == doctest::Approx(floorPoint.z).epsilon(1e-3));
+    CHECK(reading.normal.y == doctest::Approx(1.0));
+
+    char arguments[512];
+    std::snprintf(arguments, sizeof arguments,
+                  " probe cornell-box --point %.17g,%.17g,%.17g --normal %.17g,%.17g,%.17g --method gauss-seidel"
+                  " --max-patch-area %.17g --tolerance %.17g --json -",
+                  reading.at.point.x, reading.at.point.y, reading.at.point.z, reading.normal.x, reading.normal.y,
+                  reading.normal.z, kCoarsePatchArea, kTolerance);
+    const std::string output = runCommand(std::string(RADIANT_BINARY) + arguments);
+    INFO("radiant probe said: " << output);
+    const nlohmann::json expected = nlohmann::json::parse(output);
+    CHECK(expected.at("surface").get<std::string>() == "floor");
+    checkClose(expected.at("radiosity_W_m2"), reading.radiosity.value(), kAgreement, "B");
+    checkClose(expected.at("radiance_W_m2_sr"), reading.radiance.value(), kAgreement, "L");
+    checkClose(expected.at("irradiance_W_m2"), reading.irradiance.value(), kAgreement, "E");
+    REQUIRE(reading.target);
+    const nlohmann::json& target = expected.at("target");
+    CHECK(target.at("name").get<std::string>() == reading.target->name);
+    // Geometry only: identical rays from the identical point.
+    CHECK(reading.target->solidAngle.value() == doctest::Approx(target.at("solid_angle_sr").get<double>()).epsilon(1e-9));
+    CHECK(reading.target->formFactor == doctest::Approx(target.at("form_factor").get<double>()).epsilon(1e-9));
+}
+
+TEST_CASE("a wall's reflectance edit recolours it without computing form factors again") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    lab.send(command::SetTolerance{1e-5});
+    lab.send(command::Run{});
+    waitForSolver(lab);
+    frameUntil(lab, [](const app::Snapshot& s) { return !s.running && s.stats.iteration > 0; });
+    const std::uint64_t builds = lab.snapshot()->solverBuilds;
+    const std::size_t rightWall = lab.snapshot()->scene->findSurface("right wall");
+    REQUIRE(rightWall != Scene::npos);
+
+    const glm::dvec3 wallPoint{0.0, 0.35, 0.40};  // the green wall, above both blocks
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), wallPoint);
+    const glm::dvec3 before = meanColour(lab.frameAndCapture(), pixel);
+    INFO("before: " << before.x << ", " << before.y << ", " << before.z);
+    REQUIRE(before.y > before.x);  // green
+
+    // Reflectance >= 1 is refused with a reason, and nothing is sent.
+    CHECK_FALSE(lab.editMaterial(rightWall, Rgb(1.0, 0.1, 0.1), Rgb(0.0)).empty());
+    CHECK(lab.editMaterial(rightWall, Rgb(0.63, 0.065, 0.05), Rgb(0.0)).empty());  // the red wall's material
+    frameUntil(lab, [&](const app::Snapshot& s) {
+        const Material& m = s.scene->materials[s.scene->surfaces[rightWall].material];
+        return m.reflectance.x > 0.6 && !s.running && s.stats.residual < 1e-5;
+    });
+    const glm::dvec3 after = meanColour(lab.frameAndCapture(), pixel);
+    INFO("after: " << after.x << ", " << after.y << ", " << after.z);
+    CHECK(after.x > after.y + 20.0);  // red now
+    CHECK(after.x > before.x + 20.0);
+    CHECK(lab.snapshot()->solverBuilds == builds);
+}
+
+TEST_CASE("keyboard shortcuts drive the solve and the display") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    waitForSolver(lab);
+    lab.pressKey(GLFW_KEY_N);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 1 && !s.running; });
+    lab.pressKey(GLFW_KEY_RIGHT);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 2 && !s.running; });
+    lab.pressKey(GLFW_KEY_R);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 0 && s.history.empty(); });
+    const auto mode = lab.display().colourMode;
+    lab.pressKey(GLFW_KEY_F);
+    CHECK(lab.display().colourMode != mode);
+    const bool wire = lab.display().wireframe;
+    lab.pressKey(GLFW_KEY_W);
+    CHECK(lab.display().wireframe != wire);
+    lab.pressKey(GLFW_KEY_SPACE);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration > 0; });
+    lab.pressKey(GLFW_KEY_ESCAPE);
+    CHECK(lab.shouldClose());
+}
+
+} // TEST_SUITE
