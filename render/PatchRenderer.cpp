@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
 #include <map>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -15,23 +16,27 @@
 #include "render/SceneTriangles.h"
 #include "render/gl/Buffer.h"
 #include "render/gl/ShaderProgram.h"
-#include "render/gl/TextureBuffer.h"
 #include "render/gl/VertexArray.h"
 
 namespace radiant::render {
 namespace {
 
 /// What exposure 0 makes of the key radiosity, before the tone curve: a middle tone.
-constexpr double kKeyTone = 0.5;
+constexpr double kKeyTone = 0.35;
+
+/// The part of a drawn vertex that changes with the solution and the display settings. Vertex
+/// attributes rather than buffer textures: llvmpipe's texelFetch per vertex cost more than the frame.
+struct DisplayVertex {
+    glm::vec4 colour;  ///< rgb: sRGB display colour; a: position on the colour map
+    glm::vec4 tint;    ///< rgb: colour to mix toward; a: amount, +2 when the patch is outlined
+};
 
 struct PatchVertex {
     glm::vec3 position;  ///< m
     glm::vec3 edge;      ///< barycentric coordinate; 1 everywhere for the edge a quad's split hides
-    std::int32_t patch;
-    std::int32_t smoothingVertex;  ///< into the per-vertex radiosity
+    glm::vec3 normal;    ///< the patch's, unit
 };
 
-enum TextureUnit : GLuint { kVertexRadiosityUnit = 0, kPatchRadiosityUnit = 1, kPatchStyleUnit = 2 };
 
 double luminance(const Rgb& b) { return glm::dot(b, glm::dvec3(0.2126, 0.7152, 0.0722)); }
 double total(const Rgb& b) { return b.x + b.y + b.z; }
@@ -46,17 +51,51 @@ double roundUpForLegend(double value) {
     return 10.0 * decade;
 }
 
+
+/// Successive tints mix(mix(c, a.rgb, a.a), b.rgb, b.a) as one mix toward a combined colour.
+glm::vec4 addTint(const glm::vec4& a, const glm::vec4& b) {
+    const float amount = 1.0f - (1.0f - a.w) * (1.0f - b.w);
+    if (amount <= 0.0f) return glm::vec4(0.0f);
+    return {(glm::vec3(a) * a.w * (1.0f - b.w) + glm::vec3(b) * b.w) / amount, amount};
+}
+
+/// Everything the colours on the GPU depend on besides the data: when it changes, they are redone.
+struct ColourInputs {
+    float exposureStops = 0;
+    ColourMode mode = ColourMode::ToneMapped;
+    bool logScale = false;
+    float falseColourMaxW_m2 = 0;
+    bool highlight = false;
+    bool importance = false;
+    Shading shading = Shading::Smooth;
+    bool operator==(const ColourInputs&) const = default;
+};
+
+ColourInputs colourInputs(const DisplaySettings& d) {
+    return {d.exposureStops, d.colourMode,     d.logScale,
+            d.falseColourMaxW_m2, d.highlightShooter, d.showImportance, d.shading};
+}
+
+/// The fragment shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges).
+std::string variantDefines(unsigned variant) {
+    std::string defines;
+    if (variant & 1u) defines += "#define FALSE_COLOUR 1\n";
+    if (variant & 2u) defines += "#define ISOLINES 1\n";
+    if (variant & 4u) defines += "#define EDGES 1\n";
+    return defines;
+}
+
 } // namespace
 
 struct PatchRenderer::State {
-    gl::ShaderProgram program{"patch.vert.glsl", "patch.frag.glsl"};
+    std::array<std::unique_ptr<gl::ShaderProgram>, 8> programs;  // compiled on first use
     gl::ShaderProgram lineProgram{"wire.vert.glsl", "wire.frag.glsl"};
     gl::Buffer vertices;
     gl::VertexArray layout;
     GLsizei vertexCount = 0;
-    gl::TextureBuffer vertexRadiosity;  // per smoothing vertex: rgb W/m^2
-    gl::TextureBuffer patchRadiosity;   // per patch: rgb W/m^2, a = changed in the last update
-    gl::TextureBuffer patchStyle;       // per patch: rgb base colour, a = importance
+    gl::Buffer colours;  // DisplayVertex per drawn vertex, rewritten when the colours change
+    std::vector<std::uint32_t> drawnPatch;      // per drawn vertex
+    std::vector<std::uint32_t> drawnSmoothing;  // per drawn vertex
     gl::Buffer links;
     gl::VertexArray linkLayout;
     GLsizei linkVertexCount = 0;
@@ -68,36 +107,42 @@ struct PatchRenderer::State {
     std::uint64_t uploads = 0;
     bool hasRadiosity = false;
     std::int64_t shooter = -1;
+    bool coloursDirty = true;
+    ColourInputs coloursMadeWith;
 
-    // CPU copies of what the GPU holds, to smooth, diff and re-style without the mesh.
+    // CPU copies of the data, to smooth, diff and recolour without the mesh.
     std::vector<std::uint32_t> patchSurface;
     std::vector<double> patchArea;
     std::vector<std::array<std::uint32_t, 4>> patchSmoothing;  // smoothing vertex per corner
     std::vector<std::uint8_t> patchCorners;
     std::vector<char> patchEmits;
+    std::vector<glm::vec3> baseColour;  // linear: reflectance, or an emitter's chromaticity
+    std::vector<double> importance;     // relative to its maximum
     std::size_t smoothingVertexCount = 0;
-    std::vector<Rgb> previousRadiosity;
-    std::vector<glm::vec4> style;
-    std::vector<glm::vec4> patchTexels;
-    std::vector<glm::vec4> vertexTexels;
+    std::vector<Rgb> radiosity;         // per patch, W/m^2
+    std::vector<Rgb> smoothRadiosity;   // per smoothing vertex, W/m^2
+    std::vector<char> changed;          // per patch: changed in the last update
     double keyW_m2 = 1.0;
     double dataMaxW_m2 = 1.0;  // largest total radiosity of a non-emitter, rounded for the legend
 
-    void uploadStyle() { patchStyle.update(style); }
+    const gl::ShaderProgram& program(unsigned variant) {
+        if (!programs[variant])
+            programs[variant] =
+                std::make_unique<gl::ShaderProgram>("patch.vert.glsl", "patch.frag.glsl", variantDefines(variant));
+        return *programs[variant];
+    }
 };
 
 PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     constexpr std::size_t stride = sizeof(PatchVertex);
     state_->layout.addFloatAttribute(state_->vertices, 0, 3, stride, offsetof(PatchVertex, position));
     state_->layout.addFloatAttribute(state_->vertices, 1, 3, stride, offsetof(PatchVertex, edge));
-    state_->layout.addIntAttribute(state_->vertices, 2, stride, offsetof(PatchVertex, patch));
-    state_->layout.addIntAttribute(state_->vertices, 3, stride, offsetof(PatchVertex, smoothingVertex));
+    state_->layout.addFloatAttribute(state_->vertices, 2, 3, stride, offsetof(PatchVertex, normal));
+    state_->layout.addFloatAttribute(state_->colours, 3, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, colour));
+    state_->layout.addFloatAttribute(state_->colours, 4, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, tint));
     state_->linkLayout.addFloatAttribute(state_->links, 0, 3, sizeof(glm::vec3), 0);
     glBindVertexArray(0);
-    // Buffer textures must have a store before they are sampled.
-    state_->vertexRadiosity.update({});
-    state_->patchRadiosity.update({});
-    state_->patchStyle.update({});
+    state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
 }
 
 PatchRenderer::~PatchRenderer() = default;
@@ -118,6 +163,8 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     std::map<std::tuple<std::uint32_t, long, long, long>, std::uint32_t> smoothingIds;
     std::vector<PatchVertex> triangles;
     triangles.reserve(n * 6);
+    s.drawnPatch.clear();
+    s.drawnSmoothing.clear();
     for (std::size_t p = 0; p < n; ++p) {
         const Patch& patch = mesh.patches[p];
         s.patchSurface[p] = patch.surface;
@@ -131,8 +178,9 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
             s.patchSmoothing[p][c] = it->second;
         }
         const auto corner = [&](std::uint8_t c, const glm::vec3& edge) {
-            triangles.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, static_cast<std::int32_t>(p),
-                                 static_cast<std::int32_t>(s.patchSmoothing[p][c])});
+            triangles.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, glm::vec3(patch.normal)});
+            s.drawnPatch.push_back(static_cast<std::uint32_t>(p));
+            s.drawnSmoothing.push_back(s.patchSmoothing[p][c]);
         };
         // Fan about corner 0. Barycentric coordinate k is 1 at the triangle's vertex k and 0 on the
         // edge opposite; for a fan's inner diagonal (not a patch edge) that coordinate is held at 1,
@@ -148,6 +196,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.smoothingVertexCount = smoothingIds.size();
     s.vertices.setData(std::span<const PatchVertex>(triangles));
     s.vertexCount = static_cast<GLsizei>(triangles.size());
+    s.colours.setData(std::span<const DisplayVertex>(std::vector<DisplayVertex>(triangles.size())), GL_DYNAMIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
 
     s.haveMesh = true;
@@ -155,10 +204,12 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.hasRadiosity = false;
     s.radiosityGeneration = 0;
     s.shooter = -1;
-    s.previousRadiosity.clear();
+    s.radiosity.clear();
+    s.smoothRadiosity.clear();
+    s.changed.assign(n, 0);
+    s.importance.assign(n, 0.0);
     s.keyW_m2 = 1.0;
     s.dataMaxW_m2 = 1.0;
-    s.style.assign(n, glm::vec4(0.0f));
     s.linkVertexCount = 0;
     setMaterials(scene);
 }
@@ -166,6 +217,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
 void PatchRenderer::setMaterials(const Scene& scene) {
     State& s = *state_;
     s.patchEmits.resize(s.patchSurface.size());
+    s.baseColour.resize(s.patchSurface.size());
     for (std::size_t p = 0; p < s.patchSurface.size(); ++p) {
         const std::size_t surface = s.patchSurface[p];
         if (surface >= scene.surfaces.size())
@@ -174,19 +226,20 @@ void PatchRenderer::setMaterials(const Scene& scene) {
                                    std::to_string(scene.surfaces.size()) + " surfaces)");
         const Material& material = scene.materials.at(scene.surfaces[surface].material);
         s.patchEmits[p] = material.emits() ? 1 : 0;
-        s.style[p] = glm::vec4(displayColour(material), s.style[p].w);
+        s.baseColour[p] = displayColour(material);
     }
-    s.uploadStyle();
+    s.coloursDirty = true;
 }
 
 void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_t generation, std::int64_t shooter) {
     State& s = *state_;
     if (s.hasRadiosity == !radiosityW_m2.empty() && generation == s.radiosityGeneration) return;
     const std::size_t n = s.patchSurface.size();
+    s.coloursDirty = true;
     if (radiosityW_m2.empty()) {
         s.hasRadiosity = false;
         s.radiosityGeneration = generation;
-        s.previousRadiosity.clear();
+        s.radiosity.clear();
         return;
     }
     if (radiosityW_m2.size() != n)
@@ -194,23 +247,22 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
                            std::to_string(radiosityW_m2.size()) + " radiosity values for a mesh of " +
                                std::to_string(n) + " patches");
 
-    // Changed since the last upload: more than a millionth of the brightest patch.
+    // Changed since the last upload: by more than a millionth of the brightest patch.
     double brightest = 0;
     for (const Rgb& b : radiosityW_m2) brightest = std::max({brightest, b.x, b.y, b.z});
-    const bool canDiff = s.previousRadiosity.size() == n;
+    const bool canDiff = s.radiosity.size() == n;
     const double changeFloor = 1e-6 * brightest;
 
-    s.patchTexels.resize(n);
     std::vector<glm::dvec4> smoothSums(s.smoothingVertexCount, glm::dvec4(0.0));
     double litArea = 0, litLuminance = 0, maxTotal = 0, maxTotalAll = 0;
     for (std::size_t p = 0; p < n; ++p) {
         const Rgb& b = radiosityW_m2[p];
-        bool changed = false;
         if (canDiff) {
-            const glm::dvec3 d = glm::abs(b - s.previousRadiosity[p]);
-            changed = std::max({d.x, d.y, d.z}) > changeFloor;
+            const glm::dvec3 d = glm::abs(b - s.radiosity[p]);
+            s.changed[p] = std::max({d.x, d.y, d.z}) > changeFloor ? 1 : 0;
+        } else {
+            s.changed[p] = 0;
         }
-        s.patchTexels[p] = glm::vec4(glm::vec3(b), changed ? 1.0f : 0.0f);
         for (std::uint8_t c = 0; c < s.patchCorners[p]; ++c)
             smoothSums[s.patchSmoothing[p][c]] += glm::dvec4(b * s.patchArea[p], s.patchArea[p]);
         maxTotalAll = std::max(maxTotalAll, total(b));
@@ -222,17 +274,14 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
             }
         }
     }
-    s.vertexTexels.resize(smoothSums.size());
+    s.smoothRadiosity.resize(smoothSums.size());
     for (std::size_t v = 0; v < smoothSums.size(); ++v)
-        s.vertexTexels[v] = smoothSums[v].w > 0 ? glm::vec4(glm::vec3(glm::dvec3(smoothSums[v]) / smoothSums[v].w), 0.0f)
-                                                : glm::vec4(0.0f);
-    s.patchRadiosity.update(s.patchTexels);
-    s.vertexRadiosity.update(s.vertexTexels);
+        s.smoothRadiosity[v] = smoothSums[v].w > 0 ? glm::dvec3(smoothSums[v]) / smoothSums[v].w : Rgb(0.0);
 
     // Before light has bounced, only the emitters are lit: key and range follow them then.
     s.keyW_m2 = litArea > 0 ? litLuminance / litArea : std::max(maxTotalAll / 3.0, 1e-30);
     s.dataMaxW_m2 = roundUpForLegend(maxTotal > 0 ? maxTotal : maxTotalAll);
-    s.previousRadiosity.assign(radiosityW_m2.begin(), radiosityW_m2.end());
+    s.radiosity.assign(radiosityW_m2.begin(), radiosityW_m2.end());
     s.hasRadiosity = true;
     s.radiosityGeneration = generation;
     s.shooter = shooter;
@@ -242,9 +291,9 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
 void PatchRenderer::setImportance(std::span<const double> importance) {
     State& s = *state_;
     const double largest = importance.empty() ? 0.0 : *std::max_element(importance.begin(), importance.end());
-    for (std::size_t p = 0; p < s.style.size(); ++p)
-        s.style[p].w = p < importance.size() && largest > 0 ? static_cast<float>(importance[p] / largest) : 0.0f;
-    s.uploadStyle();
+    for (std::size_t p = 0; p < s.importance.size(); ++p)
+        s.importance[p] = p < importance.size() && largest > 0 ? importance[p] / largest : 0.0;
+    s.coloursDirty = true;
 }
 
 void PatchRenderer::setLinks(std::span<const glm::vec3> segmentEnds) {
@@ -273,44 +322,85 @@ std::size_t PatchRenderer::patchCount() const { return state_->patchSurface.size
 bool PatchRenderer::hasRadiosity() const { return state_->hasRadiosity; }
 std::uint64_t PatchRenderer::radiosityUploads() const { return state_->uploads; }
 
+void PatchRenderer::refreshColours() const {
+    State& s = *state_;
+    const ColourInputs inputs = colourInputs(s.settings);
+    if (!s.coloursDirty && inputs == s.coloursMadeWith) return;
+    const std::size_t n = s.patchSurface.size();
+    const double scale = exposureScale();
+    const ColourLegend range = legend();
+    const auto colourOf = [&](const Rgb& b) {
+        return glm::vec4(glm::vec3(toneMap(b, scale)), static_cast<float>(range.position(total(b))));
+    };
+    std::vector<glm::vec4> patchColours(n), vertexColours(s.smoothingVertexCount), tints(n, glm::vec4(0.0f));
+    if (s.hasRadiosity) {
+        for (std::size_t p = 0; p < n; ++p) patchColours[p] = colourOf(s.radiosity[p]);
+        for (std::size_t v = 0; v < vertexColours.size(); ++v) vertexColours[v] = colourOf(s.smoothRadiosity[v]);
+    } else {
+        for (std::size_t p = 0; p < n; ++p) {
+            const glm::vec3 encoded(static_cast<float>(linearToSrgb(s.baseColour[p].x)),
+                                    static_cast<float>(linearToSrgb(s.baseColour[p].y)),
+                                    static_cast<float>(linearToSrgb(s.baseColour[p].z)));
+            patchColours[p] = glm::vec4(encoded, 0.0f);
+            for (std::uint8_t c = 0; c < s.patchCorners[p]; ++c) vertexColours[s.patchSmoothing[p][c]] = patchColours[p];
+        }
+    }
+    for (std::size_t p = 0; p < n; ++p) {
+        glm::vec4 tint(0.0f);
+        if (inputs.importance) tint = addTint(tint, {1.0f, 0.1f, 0.8f, 0.6f * static_cast<float>(s.importance[p])});
+        const bool isShooter = inputs.highlight && s.hasRadiosity && static_cast<std::int64_t>(p) == s.shooter;
+        if (inputs.highlight && s.hasRadiosity && s.changed[p]) tint = addTint(tint, {1.0f, 0.55f, 0.15f, 0.22f});
+        if (isShooter) tint = addTint(tint, {1.0f, 0.45f, 0.0f, 0.35f});
+        tints[p] = glm::vec4(glm::vec3(tint), tint.w + (isShooter ? 2.0f : 0.0f));
+    }
+    // Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
+    const bool smooth = inputs.shading == Shading::Smooth;
+    std::vector<DisplayVertex> drawn(s.drawnPatch.size());
+    for (std::size_t v = 0; v < drawn.size(); ++v)
+        drawn[v] = {smooth ? vertexColours[s.drawnSmoothing[v]] : patchColours[s.drawnPatch[v]], tints[s.drawnPatch[v]]};
+    glBindBuffer(GL_ARRAY_BUFFER, s.colours.id());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, static_cast<GLsizeiptr>(drawn.size() * sizeof(DisplayVertex)), drawn.data());
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    s.coloursDirty = false;
+    s.coloursMadeWith = inputs;
+}
+
 void PatchRenderer::draw(const Camera& camera, double aspect) const {
-    const State& s = *state_;
+    State& s = *state_;
     if (!s.haveMesh || s.vertexCount == 0) return;
+    refreshColours();
     const DisplaySettings& d = s.settings;
     const glm::mat4 viewProjection(camera.viewProjection(aspect));
+    const bool falseColour = d.colourMode == ColourMode::FalseColour && s.hasRadiosity;
+    const bool outline = d.highlightShooter && s.hasRadiosity && s.shooter >= 0;
+    const unsigned variant = (falseColour ? 1u : 0u) | (falseColour && d.isolines ? 2u : 0u) |
+                             (d.wireframe || outline ? 4u : 0u);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // walls are seen from inside, blocks from outside: both sides are real
     glDisable(GL_BLEND);
-    const gl::ShaderProgram& p = s.program;
+    const gl::ShaderProgram& p = s.program(variant);
     p.use();
     p.set("viewProjection", viewProjection);
     p.set("eye", glm::vec3(camera.eye));
     const glm::dvec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
     const glm::dvec3 up = glm::cross(right, camera.forward);
     p.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
-    s.vertexRadiosity.bind(kVertexRadiosityUnit);
-    s.patchRadiosity.bind(kPatchRadiosityUnit);
-    s.patchStyle.bind(kPatchStyleUnit);
-    p.set("vertexRadiosity", static_cast<int>(kVertexRadiosityUnit));
-    p.set("patchRadiosity", static_cast<int>(kPatchRadiosityUnit));
-    p.set("patchStyle", static_cast<int>(kPatchStyleUnit));
     p.set("hasRadiosity", s.hasRadiosity ? 1 : 0);
-    p.set("smoothShading", d.shading == Shading::Smooth ? 1 : 0);
-    p.set("exposureScale", static_cast<float>(exposureScale()));
-    const ColourLegend range = legend();
-    p.set("falseColour", d.colourMode == ColourMode::FalseColour ? 1 : 0);
-    p.set("logScale", range.logScale ? 1 : 0);
-    p.set("legendMin", static_cast<float>(range.minW_m2));
-    p.set("legendMax", static_cast<float>(range.maxW_m2));
-    p.set("isolines", d.isolines ? 1 : 0);
-    const double step = range.ticksW_m2.size() >= 2 ? range.ticksW_m2[1] - range.ticksW_m2[0] : range.maxW_m2;
-    p.set("isolineStep", static_cast<float>(step));
     p.set("wireframe", d.wireframe ? 1 : 0);
-    p.set("highlight", d.highlightShooter ? 1 : 0);
-    p.set("shooter", static_cast<int>(s.shooter));
-    p.set("showImportance", d.showImportance ? 1 : 0);
+    // Isolines where the value crosses a tick: linear legends tick every `step` W/m^2 from the
+    // minimum, log legends at each power of ten.
+    const ColourLegend range = legend();
+    if (range.logScale) {
+        const double lo = std::log10(range.minW_m2), hi = std::log10(range.maxW_m2);
+        p.set("isolineScale", static_cast<float>(hi - lo));
+        p.set("isolineOffset", static_cast<float>(lo));
+    } else {
+        const double step = range.ticksW_m2.size() >= 2 ? range.ticksW_m2[1] - range.ticksW_m2[0] : range.maxW_m2;
+        p.set("isolineScale", static_cast<float>((range.maxW_m2 - range.minW_m2) / step));
+        p.set("isolineOffset", static_cast<float>(range.minW_m2 / step));
+    }
     // Pushed back by their depth slope so overlays drawn at the same depth stay on top.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
@@ -329,7 +419,6 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glDisable(GL_BLEND);
     }
     glBindVertexArray(0);
-    glActiveTexture(GL_TEXTURE0);
 }
 
 } // namespace radiant::render

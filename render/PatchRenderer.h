@@ -2,8 +2,9 @@
 // Radiosity on screen: draws the patch mesh coloured by the newest per-patch radiosity (tone-mapped
 // or false colour), smooth (Gouraud across each surface's conforming mesh) or flat, with overlays
 // (wireframe, last shooter, changed patches, hierarchical links, importance). Streaming is cheap:
-// geometry is uploaded when the mesh generation changes, radiosity (12 bytes a patch, in a texture
-// buffer indexed by patch id) when the solution generation changes, nothing otherwise.
+// geometry is uploaded when the mesh generation changes; display colours (16 bytes a patch and a
+// vertex, in buffer textures indexed by patch and vertex id) are worked out on the CPU and uploaded
+// when the solution generation or a colour setting changes, nothing otherwise.
 // GL-free header; GL objects live in the implementation. Create, use and destroy on the GL thread.
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -54,7 +55,7 @@ public:
     /// Radiosity (W/m^2) the tone map's exposure 0 shows as a middle tone: the area-weighted mean
     /// luminance of the lit non-emitting patches (1 before any solution).
     [[nodiscard]] double exposureKeyW_m2() const;
-    /// Multiplier applied to radiosity before the tone curve: 2^stops * 0.5 / exposureKeyW_m2().
+    /// Multiplier applied to radiosity before the tone curve: 2^stops * 0.35 / exposureKeyW_m2().
     [[nodiscard]] double exposureScale() const;
 
     [[nodiscard]] std::size_t patchCount() const;
@@ -63,6 +64,9 @@ public:
     [[nodiscard]] std::uint64_t radiosityUploads() const;
 
 private:
+    /// Redoes the per-patch and per-vertex display colours when the data or the settings changed.
+    void refreshColours() const;
+
     struct State;
     std::unique_ptr<State> state_;
 };

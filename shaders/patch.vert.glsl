@@ -1,24 +1,44 @@
 #version 330 core
-// Patch triangles in world space (metres). Smooth shading reads the per-vertex radiosity (the
-// area-weighted mean of the vertex's patches on its surface, computed on upload) and lets the
-// rasteriser interpolate it: Gouraud shading across the conforming mesh.
+// Patch triangles in world space (metres). Display colours arrive ready-made as vertex attributes
+// (PatchRenderer works them out on the CPU when the radiosity or the display settings change:
+// ACES-fitted tone curve and sRGB encoding, or the position on the colour map): software GL
+// (llvmpipe) runs shaders on the CPU, where a pow() or a buffer-texture fetch per vertex or pixel
+// per frame cost several times the whole frame. Smooth shading is Gouraud's: the colours of the
+// per-vertex radiosity interpolated across the conforming mesh; flat shading gives a patch's
+// vertices its own colour.
 layout(location = 0) in vec3 position;
-layout(location = 1) in vec3 edgeCoordinate;  // barycentric; 1 on every vertex for a quad's hidden diagonal
-layout(location = 2) in int patchIndex;
-layout(location = 3) in int vertexIndex;      // into the mesh's vertices
+layout(location = 1) in vec3 edgeCoordinate;  // barycentric; held at 1 for a fan's inner diagonal
+layout(location = 2) in vec3 normal;          // the patch's, unit
+layout(location = 3) in vec4 colour;          // rgb: sRGB display colour; a: position on the colour map
+layout(location = 4) in vec4 tintAndOutline;  // rgb: colour to mix toward; a: amount, +2 when outlined
 
 uniform mat4 viewProjection;
-uniform samplerBuffer vertexRadiosity;  // rgb: W/m^2
+uniform int hasRadiosity;
+uniform vec3 eye;
+uniform vec3 keyDirection;   // unit: a key light fixed to the camera, for the base view only
+uniform float isolineScale;  // isoline coordinate = colour-map position * scale + offset
+uniform float isolineOffset;
 
-out vec3 worldPosition;
-out vec3 smoothRadiosity;
+out vec3 displayColour;  // sRGB-encoded
+out float legendT;
+out float isolineU;
+out vec4 tint;
 out vec3 edge;
-flat out int patchId;
+flat out int outlined;
 
 void main() {
-    worldPosition = position;
-    smoothRadiosity = texelFetch(vertexRadiosity, vertexIndex).rgb;
+    displayColour = colour.rgb;
+    if (hasRadiosity == 0) {
+        // No solution yet: the materials, dimmed where the face turns away (a display aid, so the
+        // dimming acts on the encoded colour).
+        vec3 toEye = normalize(eye - position);
+        vec3 n = dot(normal, toEye) < 0.0 ? -normal : normal;
+        displayColour *= 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
+    }
+    legendT = colour.a;
+    isolineU = colour.a * isolineScale + isolineOffset;
+    outlined = tintAndOutline.a >= 2.0 ? 1 : 0;
+    tint = vec4(tintAndOutline.rgb, tintAndOutline.a - 2.0 * float(outlined));
     edge = edgeCoordinate;
-    patchId = patchIndex;
     gl_Position = viewProjection * vec4(position, 1.0);
 }

@@ -28,14 +28,18 @@ std::string programLog(GLuint program) {
     return log.data();
 }
 
-GLuint compile(GLenum stage, std::string_view fileName) {
+GLuint compile(GLenum stage, std::string_view fileName, std::string_view defines) {
     const std::optional<std::string_view> source = embeddedShader(fileName);
     if (!source)
         throw RadiantError({"shaders/" + std::string(fileName), ""}, "no such shader was embedded in the binary");
+    // The defines go right after the #version line, which must stay first.
+    std::string text(*source);
+    const std::size_t afterVersion = text.find('\n') == std::string::npos ? text.size() : text.find('\n') + 1;
+    text.insert(afterVersion, std::string(defines));
     const GLuint shader = glCreateShader(stage);
-    const char* text = source->data();
-    const auto length = static_cast<GLint>(source->size());
-    glShaderSource(shader, 1, &text, &length);
+    const char* chars = text.data();
+    const auto length = static_cast<GLint>(text.size());
+    glShaderSource(shader, 1, &chars, &length);
     glCompileShader(shader);
     GLint ok = GL_FALSE;
     glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -50,11 +54,14 @@ GLuint compile(GLenum stage, std::string_view fileName) {
 } // namespace
 
 ShaderProgram::ShaderProgram(std::string_view vertexFile, std::string_view fragmentFile)
+    : ShaderProgram(vertexFile, fragmentFile, {}) {}
+
+ShaderProgram::ShaderProgram(std::string_view vertexFile, std::string_view fragmentFile, std::string_view defines)
     : name_(std::string(vertexFile) + " + " + std::string(fragmentFile)) {
-    const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile);
+    const GLuint vertex = compile(GL_VERTEX_SHADER, vertexFile, defines);
     GLuint fragment = 0;
     try {
-        fragment = compile(GL_FRAGMENT_SHADER, fragmentFile);
+        fragment = compile(GL_FRAGMENT_SHADER, fragmentFile, defines);
     } catch (...) {
         glDeleteShader(vertex);
         throw;

@@ -15,6 +15,9 @@ class ShaderProgram {
 public:
     /// Compiles shaders/<vertexFile> and shaders/<fragmentFile> and links them.
     ShaderProgram(std::string_view vertexFile, std::string_view fragmentFile);
+    /// As above with `defines` ("#define X 1\n" lines) inserted after each file's #version line:
+    /// specialised variants, so software GL does not pay per pixel for features that are off.
+    ShaderProgram(std::string_view vertexFile, std::string_view fragmentFile, std::string_view defines);
     ~ShaderProgram();
     ShaderProgram(ShaderProgram&& other) noexcept;
     ShaderProgram& operator=(ShaderProgram&& other) noexcept;

@@ -1,7 +1,8 @@
 // The patch renderer drawn offscreen on a hand-built field: one unit square cut into a row of
 // patches whose radiosity rises left to right as B_k = c k^2 (grey). Expected pixels come from the
-// documented formulas written out here (ACES fit, sRGB curve, viridis end colours, Gouraud as the
-// area-weighted vertex mean interpolated linearly), never from the renderer's own helpers.
+// documented formulas written out here (ACES fit, sRGB curve, viridis end colours, Gouraud: the
+// display colours of the area-weighted vertex means interpolated linearly), never from the
+// renderer's own helpers.
 #include <doctest/doctest.h>
 
 #include <algorithm>
@@ -100,14 +101,14 @@ double expectedExposureScale(double stops) {
     return std::exp2(stops) * 0.35 / (sum / lit);
 }
 
-/// Gouraud oracle: vertex values are the mean of the (equal-area) adjacent patches; along x the
-/// value is linear between the patch's left and right edge values.
-double smoothRadiosityAt(double x) {
+/// Gouraud oracle: vertex radiosity is the mean of the (equal-area) adjacent patches; each vertex's
+/// display colour is interpolated linearly in x between the patch's left and right edges.
+double smoothPixelAt(double x, double exposureScale) {
     const int k = std::min(static_cast<int>(x * kPatches), kPatches - 1);
     const double left = k == 0 ? radiosityOf(0) : (radiosityOf(k - 1) + radiosityOf(k)) / 2;
     const double right = k == kPatches - 1 ? radiosityOf(k) : (radiosityOf(k) + radiosityOf(k + 1)) / 2;
     const double f = x * kPatches - k;
-    return left + (right - left) * f;
+    return toneMapped255(left, exposureScale) * (1 - f) + toneMapped255(right, exposureScale) * f;
 }
 
 struct Rig {
@@ -174,9 +175,9 @@ TEST_CASE("smooth shading interpolates the area-weighted vertex means, and flat 
     const ImageRgb8 flat = rig.draw(settings);
 
     for (const double x : {0.1, 0.3, 0.45, 0.5, 0.7, 0.77, 0.9}) {
-        const double expected = toneMapped255(smoothRadiosityAt(x), scale);
+        const double expected = smoothPixelAt(x, scale);
         const double got = pixelAt(smooth, x, 0.37).y;
-        INFO("x = ", x, ": smooth B = ", smoothRadiosityAt(x), " W/m^2, expected ", expected, ", got ", got);
+        INFO("x = ", x, ": expected ", expected, ", got ", got);
         CHECK(std::abs(got - expected) <= 3.0);
     }
     // Either side of the edge between patches 2 and 3 (x = 0.6): a step in flat, continuous in smooth.
