@@ -128,10 +128,10 @@ BenchTable benchSolvers(const BenchOptions& options) {
     }
     table.notes = {
         "Residual: gathering methods max over bands of sum_i A_i |B_i - E_i - rho_i sum_j F_ij B_j| / sum_i A_i E_i;",
-        "progressive: unshot power / emitted power (an upper bound of the former); its shooters are blocks of about",
-        "sqrt(patches / 50) x sqrt(patches / 50) patches of one face (Cohen et al. 1986), every patch receives.",
-        "Times are one run each, wall clock,",
-        "on a machine shared with other work; stepping stops after " + formatNumber(budget, 2) +
+        "progressive: unshot power / emitted power (an upper bound of the former). Progressive shooters are blocks of",
+        "about sqrt(patches / 50) patches a side on one face (Cohen et al. 1986); every patch receives on its own.",
+        "Times are one run each, wall clock, on a machine shared with other work; stepping stops after " +
+            formatNumber(budget, 2) +
             " s per row. Memory: the solver's own arrays (matrix included).",
     };
     return table;
