@@ -11,6 +11,7 @@
 #include <limits>
 #include <optional>
 
+#include "app/panels/DisplayPanel.h"
 #include "app/panels/InfoPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
@@ -105,6 +106,7 @@ struct Lab::State {
         sidebar.add(std::make_unique<SolverPanel>(live));
         sidebar.add(std::make_unique<MaterialsPanel>(live));
         sidebar.add(std::move(probe));
+        sidebar.add(std::make_unique<DisplayPanel>(display, [this] { return patches->legend(); }));
         sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote()));
 
         live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});

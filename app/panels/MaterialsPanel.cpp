@@ -46,8 +46,8 @@ void MaterialsPanel::draw() {
 
 void MaterialsPanel::drawSurfaceList(const Scene& scene) {
     ImGui::TextDisabled("Surfaces");
-    const float rows = static_cast<float>(std::min<std::size_t>(scene.surfaces.size(), 7));
-    const float height = rows * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().FramePadding.y * 2.0f;
+    const float rows = static_cast<float>(std::min<std::size_t>(scene.surfaces.size(), 10));
+    const float height = rows * ImGui::GetTextLineHeightWithSpacing() + ImGui::GetStyle().FramePadding.y * 4.0f;
     if (ImGui::BeginListBox("##surfaces", {-1, height})) {
         for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
             ImGui::PushID(static_cast<int>(s));
@@ -94,7 +94,7 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     changed |= ImGui::InputFloat3("##rhoNumbers", reflectance_.data(), "%.3f");
     committed |= ImGui::IsItemDeactivatedAfterEdit();
 
-    ImGui::TextDisabled("Exitance (per band, \xE2\x89\xA5 0)");
+    ImGui::TextDisabled("Exitance (per band, >= 0)");
     ImGui::SetNextItemWidth(-labelWidth);
     changed |= ImGui::InputFloat3("##exitance", exitance_.data(), "%.2f");
     committed |= ImGui::IsItemDeactivatedAfterEdit();

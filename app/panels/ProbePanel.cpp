@@ -23,15 +23,15 @@ namespace {
 
 void row(const char* label, const char* unit, const Rgb& v) {
     ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 4.0f);
-    ImGui::Text("%.4g  %.4g  %.4g", v.x, v.y, v.z);
+    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
+    ImGui::Text("%.3g  %.3g  %.3g", v.x, v.y, v.z);
     ImGui::SameLine();
     ImGui::TextDisabled("%s", unit);
 }
 
 void scalarRow(const char* label, const char* format, double value) {
     ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 9.5f);
+    ImGui::SameLine(ImGui::GetFontSize() * 10.0f);
     ImGui::Text(format, value);
 }
 
@@ -144,8 +144,8 @@ void ProbePanel::draw() {
     if (reading_ && reading_->target) {
         const TargetReading& t = *reading_->target;
         scalarRow("Solid angle", "%.5f sr", t.solidAngle.value());
-        scalarRow("Projected solid angle", "%.5f sr", t.projectedSolidAngle.value());
-        scalarRow("Form factor dA\xE2\x86\x92target", "%.5f", t.formFactor);
+        scalarRow("Projected s. angle", "%.5f sr", t.projectedSolidAngle.value());
+        scalarRow("Form factor", "%.5f", t.formFactor);
         if (t.unoccludedFormFactor > t.formFactor * (1 + 1e-6))
             scalarRow("  without occlusion", "%.5f", t.unoccludedFormFactor);
     }
@@ -158,7 +158,7 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     const Surface& surface = scene.surfaces.at(reading.at.surface);
     const Material& material = scene.materials.at(surface.material);
     ImGui::TextDisabled("Surface");
-    ImGui::SameLine(ImGui::GetFontSize() * 4.0f);
+    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
     ImGui::Text("%s", surface.name.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("patch %zu", reading.at.patch);
@@ -167,11 +167,11 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     ImGui::Spacing();
     ImGui::TextDisabled("per band: red  green  blue");
     row("B", "W/m\xC2\xB2", reading.radiosity.value());
-    row("L = B/\xCF\x80", "W/(m\xC2\xB2 sr)", reading.radiance.value());
+    row("L = B/pi", "W/(m\xC2\xB2 sr)", reading.radiance.value());
     row("E", "W/m\xC2\xB2", reading.irradiance.value());
-    row("\xCF\x81", "", material.reflectance);
+    row("rho", "", material.reflectance);
     // The radiosity equation at this point: what leaves is what is emitted plus what is reflected.
-    row("M+\xCF\x81" "E", "W/m\xC2\xB2", material.exitance.value() + material.reflectance * reading.irradiance.value());
+    row("M + rho E", "W/m\xC2\xB2", material.exitance.value() + material.reflectance * reading.irradiance.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Emitted exitance plus reflected irradiance: equals B once the solve has converged\n"
                           "(up to the patch discretisation: B is interpolated, E is gathered exactly)");
