@@ -21,13 +21,14 @@ struct DisplaySettings {
     ColourMode colourMode = ColourMode::ToneMapped;
     /// False colour on a log10 scale spanning kLogDecades decades below the maximum.
     bool logScale = false;
-    /// W/m^2 mapped to the top of the colour map; 0 = automatic (the largest non-emitter radiosity).
+    /// W/m^2 mapped to the top of the colour map; 0 = automatic (the 99th area percentile of the
+    /// non-emitters' total radiosity, rounded up to a round number).
     float falseColourMaxW_m2 = 0.0f;
     /// Contour lines at each tick of the legend (false colour only).
     bool isolines = false;
     bool wireframe = false;
-    /// Step mode: outline the last shooting patch, and tint the patches whose radiosity changed in
-    /// the last update.
+    /// Step mode: outline the last shooting patch, and tint the patches whose radiosity changed
+    /// visibly in the last update (unless most did, as in a gathering sweep).
     bool highlightShooter = true;
     bool showLinks = false;       ///< hierarchical links as line segments
     bool showImportance = false;  ///< per-patch importance as a magenta tint

@@ -10,6 +10,7 @@
 #include <map>
 #include <string>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include "radiometry/common/Error.h"
@@ -123,7 +124,7 @@ struct PatchRenderer::State {
     std::vector<Rgb> smoothRadiosity;   // per smoothing vertex, W/m^2
     std::vector<char> changed;          // per patch: changed in the last update
     double keyW_m2 = 1.0;
-    double dataMaxW_m2 = 1.0;  // largest total radiosity of a non-emitter, rounded for the legend
+    double dataMaxW_m2 = 1.0;  // 99th area percentile of the non-emitters' total radiosity, rounded up
 
     const gl::ShaderProgram& program(unsigned variant) {
         if (!programs[variant])
@@ -247,14 +248,18 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
                            std::to_string(radiosityW_m2.size()) + " radiosity values for a mesh of " +
                                std::to_string(n) + " patches");
 
-    // Changed since the last upload: by more than a millionth of the brightest patch.
+    // Changed since the last upload: visibly, by more than a thousandth of the brightest reflector's
+    // radiosity (emitters change by nothing but their own reflected part).
     double brightest = 0;
-    for (const Rgb& b : radiosityW_m2) brightest = std::max({brightest, b.x, b.y, b.z});
+    for (std::size_t p = 0; p < n; ++p)
+        if (!s.patchEmits[p]) brightest = std::max({brightest, radiosityW_m2[p].x, radiosityW_m2[p].y, radiosityW_m2[p].z});
     const bool canDiff = s.radiosity.size() == n;
-    const double changeFloor = 1e-6 * brightest;
+    const double changeFloor = 1e-3 * brightest;
 
     std::vector<glm::dvec4> smoothSums(s.smoothingVertexCount, glm::dvec4(0.0));
-    double litArea = 0, litLuminance = 0, maxTotal = 0, maxTotalAll = 0;
+    double litArea = 0, litLuminance = 0, maxTotalAll = 0, reflectorArea = 0;
+    std::vector<std::pair<double, double>> reflectorTotals;  // (total radiosity, area) of non-emitters
+    reflectorTotals.reserve(n);
     for (std::size_t p = 0; p < n; ++p) {
         const Rgb& b = radiosityW_m2[p];
         if (canDiff) {
@@ -267,20 +272,35 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
             smoothSums[s.patchSmoothing[p][c]] += glm::dvec4(b * s.patchArea[p], s.patchArea[p]);
         maxTotalAll = std::max(maxTotalAll, total(b));
         if (!s.patchEmits[p]) {
-            maxTotal = std::max(maxTotal, total(b));
+            reflectorTotals.emplace_back(total(b), s.patchArea[p]);
+            reflectorArea += s.patchArea[p];
             if (luminance(b) > 0) {
                 litArea += s.patchArea[p];
                 litLuminance += s.patchArea[p] * luminance(b);
             }
         }
     }
+    // A tint on every patch (a gathering sweep) says nothing and hides the picture: tint only when the
+    // step touched part of the scene, as a shot does.
+    if (2 * static_cast<std::size_t>(std::count(s.changed.begin(), s.changed.end(), 1)) > n)
+        std::fill(s.changed.begin(), s.changed.end(), 0);
     s.smoothRadiosity.resize(smoothSums.size());
     for (std::size_t v = 0; v < smoothSums.size(); ++v)
         s.smoothRadiosity[v] = smoothSums[v].w > 0 ? glm::dvec3(smoothSums[v]) / smoothSums[v].w : Rgb(0.0);
 
     // Before light has bounced, only the emitters are lit: key and range follow them then.
     s.keyW_m2 = litArea > 0 ? litLuminance / litArea : std::max(maxTotalAll / 3.0, 1e-30);
-    s.dataMaxW_m2 = roundUpForLegend(maxTotal > 0 ? maxTotal : maxTotalAll);
+    // The automatic false-colour range ends at the 99th area percentile of the reflectors: a few
+    // hot patches (beside an emitter, in a corner) would otherwise squash everything else into
+    // the bottom of the colour map. Brighter patches show the top colour.
+    std::sort(reflectorTotals.begin(), reflectorTotals.end());
+    double percentileTotal = 0, area = 0;
+    for (const auto& [value, patchArea] : reflectorTotals) {
+        percentileTotal = value;
+        area += patchArea;
+        if (area >= 0.99 * reflectorArea) break;
+    }
+    s.dataMaxW_m2 = roundUpForLegend(percentileTotal > 0 ? percentileTotal : maxTotalAll);
     s.radiosity.assign(radiosityW_m2.begin(), radiosityW_m2.end());
     s.hasRadiosity = true;
     s.radiosityGeneration = generation;

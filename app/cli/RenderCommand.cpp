@@ -78,6 +78,13 @@ int runRender(const RenderOptions& options) {
     std::printf("%s: %zu patches, %s, %zu iterations, residual %.3g; wrote %s (%d x %d)\n", options.scene.c_str(),
                 mesh.size(), std::string(methodName(method)).c_str(), stats.iteration, stats.residual,
                 options.png.c_str(), options.width, options.height);
+    const render::ColourLegend legend = renderer.legend();
+    if (options.falseColour)
+        std::printf("false colour: total radiosity %g to %g W/m^2 (%s) on viridis\n", legend.minW_m2, legend.maxW_m2,
+                    legend.logScale ? "log" : "linear");
+    else
+        std::printf("exposure %+g stops: key %.4g W/m^2 (mean luminance of lit non-emitters), ACES-fitted, sRGB\n",
+                    static_cast<double>(options.exposureStops), renderer.exposureKeyW_m2());
     return 0;
 }
 

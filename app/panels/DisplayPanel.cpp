@@ -75,13 +75,14 @@ void DisplayPanel::draw() {
 
     ImGui::Spacing();
     ImGui::TextDisabled("Overlays");
+    const float secondColumn = ImGui::GetFontSize() * 9.0f;
     ImGui::Checkbox("Wireframe", &s.wireframe);
-    ImGui::SameLine(labelRoom);
+    ImGui::SameLine(secondColumn);
     ImGui::Checkbox("Shooter", &s.highlightShooter);
     help("Outline the patch shot in the last step and tint the patches it changed.");
     ImGui::Checkbox("Links", &s.showLinks);
     help("Hierarchical radiosity's links between elements.");
-    ImGui::SameLine(labelRoom);
+    ImGui::SameLine(secondColumn);
     ImGui::Checkbox("Importance", &s.showImportance);
     help("Importance-driven radiosity's per-patch importance, relative to its maximum (magenta).");
 
