@@ -143,6 +143,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     std::size_t idleUploads = 0, runningUploads = 0;
     const std::size_t stepsBefore = solver.snapshot()->stats.iteration;
     const std::vector<double> idle = loop.run(frames, &idleUploads);
+    const std::size_t stepsIdle = solver.snapshot()->stats.iteration - stepsBefore;
     solver.send(command::Run{});
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the worker is stepping
     const std::size_t runningFrom = solver.snapshot()->stats.iteration;
@@ -152,7 +153,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     const std::size_t patches = solver.snapshot()->mesh ? solver.snapshot()->mesh->size() : 0;
 
     table.rows.push_back({"idle", std::to_string(idle.size()), ms(median(idle)), ms(percentile(idle, 0.99)),
-                          std::to_string(idleUploads), std::to_string(runningFrom - stepsBefore)});
+                          std::to_string(idleUploads), std::to_string(stepsIdle)});
     table.rows.push_back({"progressive running", std::to_string(running.size()), ms(median(running)),
                           ms(percentile(running, 0.99)), std::to_string(runningUploads), std::to_string(stepsRunning)});
     table.notes.push_back(std::to_string(patches) + " patches (max patch area " +

@@ -47,6 +47,9 @@ int runRender(const RenderOptions& options) {
     if (!(options.maxPatchArea > 0))
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
     const SolverMethod method = parseMethod(options.method);
+    // The GL context first, so a missing display fails before the solve rather than after. Any
+    // window will do: the picture goes to a framebuffer of the requested size.
+    const Window window({64, 64, "radiant render", /*visible=*/false, /*vsync=*/false});
 
     LoadedScene loaded = loadScene(options.scene);
     for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
@@ -59,8 +62,6 @@ int runRender(const RenderOptions& options) {
     do stats = solver->step();
     while (stats.residual > kTolerance && stats.iteration < kMaxIterations);
 
-    // Any window will do for a context: the picture goes to a framebuffer of the requested size.
-    const Window window({64, 64, "radiant render", /*visible=*/false, /*vsync=*/false});
     render::PatchRenderer renderer;
     renderer.setMesh(scene, mesh, 1);
     renderer.setRadiosity(solver->solution(), 1, -1);
