@@ -10,6 +10,7 @@
 
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/hemicube/HemicubeGather.h"
+#include "radiometry/hemisphere/HemisphericalCoordinates.h"
 #include "render/SceneTriangles.h"
 
 namespace radiant::app {
@@ -17,6 +18,16 @@ namespace {
 
 constexpr int kViewPixels = 320;
 constexpr int kResolutions[] = {64, 128, 256, 512};
+
+/// The azimuth (in the hemicube's frame) of the direction drawn upward: world up (+y) where the
+/// normal is not vertical, else +z (deeper into the Cornell box, as its camera sees it).
+double upAzimuth(const glm::dvec3& normal) {
+    const HemisphereFrame frame(normal);
+    glm::dvec3 up{0, 1, 0};
+    if (std::abs(frame.normal().y) > 0.99) up = {0, 0, 1};
+    const glm::dvec3 local = frame.toLocal(up);
+    return std::atan2(local.y, local.x);
+}
 
 } // namespace
 
@@ -74,7 +85,7 @@ void HemispherePanel::update() {
 void HemispherePanel::recolour() {
     const render::HemicubeCapture& capture = session_->capture();
     if (!map_ || map_->projection() != projection_ || mapResolution_ != capture.layout.resolution()) {
-        map_.emplace(capture.layout, projection_, kViewPixels);
+        map_.emplace(capture.layout, projection_, kViewPixels, upAzimuth(capture.normal));
         mapResolution_ = capture.layout.resolution();
     }
     const Snapshot& snapshot = session_->snapshot();
@@ -85,7 +96,7 @@ void HemispherePanel::recolour() {
     const std::span<const Rgb> radiosity = snapshot.radiosity.size() == snapshot.mesh->size()
                                                ? std::span<const Rgb>(snapshot.radiosity)
                                                : std::span<const Rgb>();
-    const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture.layout, capture.items,
+    const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture.layout, capture.items, capture.normal,
                                                                    *snapshot.mesh, colours, radiosity, imageOptions_);
     if (!texture_) texture_.emplace();
     texture_->upload(kViewPixels, kViewPixels, rgba);
@@ -132,19 +143,25 @@ void HemispherePanel::draw() {
 
     int resolution = session_->resolution();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    if (ImGui::BeginCombo("hemicube (px per side)", std::to_string(resolution).c_str())) {
+    if (ImGui::BeginCombo("hemicube pixels per side", std::to_string(resolution).c_str())) {
         for (const int r : kResolutions)
             if (ImGui::Selectable(std::to_string(r).c_str(), r == resolution)) session_->setResolution(r);
         ImGui::EndCombo();
     }
     int projection = static_cast<int>(projection_);
-    if (ImGui::RadioButton("Nusselt", &projection, 0) | (ImGui::SameLine(), ImGui::RadioButton("equidistant", &projection, 1)) |
-        (ImGui::SameLine(), ImGui::RadioButton("equisolid", &projection, 2)))
-        setProjection(static_cast<HemisphereProjection>(projection));
+    bool changed = ImGui::RadioButton("Nusselt", &projection, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("equidistant", &projection, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("equisolid", &projection, 2);
+    if (changed) setProjection(static_cast<HemisphereProjection>(projection));
     int colouring = static_cast<int>(imageOptions_.colouring);
-    if (ImGui::RadioButton("surfaces", &colouring, 0) | (ImGui::SameLine(), ImGui::RadioButton("radiance", &colouring, 1)) |
-        (ImGui::SameLine(), ImGui::RadioButton("delta F", &colouring, 2)))
-        setColouring(static_cast<render::HemisphereColouring>(colouring));
+    changed = ImGui::RadioButton("surfaces", &colouring, 0);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("radiance", &colouring, 1);
+    ImGui::SameLine();
+    changed |= ImGui::RadioButton("delta F", &colouring, 2);
+    if (changed) setColouring(static_cast<render::HemisphereColouring>(colouring));
     if (ImGui::Checkbox("theta/phi grid (15 / 30 deg)", &imageOptions_.grid)) dirty_ = true;
     if (ImGui::BeginCombo("target", snapshot.scene->surfaces[*target_].name.c_str())) {
         for (std::size_t s = 0; s < snapshot.scene->surfaces.size(); ++s)

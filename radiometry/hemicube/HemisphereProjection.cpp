@@ -42,18 +42,25 @@ glm::dvec2 diskPointOfDirection(HemisphereProjection projection, const glm::dvec
     return {d.x / horizontal * radius, d.y / horizontal * radius};
 }
 
-HemisphereViewMap::HemisphereViewMap(const HemicubeLayout& layout, HemisphereProjection projection, int size)
+HemisphereViewMap::HemisphereViewMap(const HemicubeLayout& layout, HemisphereProjection projection, int size,
+                                     double upAzimuth)
     : projection_(projection), size_(size),
+      up_(std::cos(upAzimuth), std::sin(upAzimuth)), right_(-std::sin(upAzimuth), std::cos(upAzimuth)),
       atlasIndex_(static_cast<std::size_t>(size) * static_cast<std::size_t>(size), -1) {
     for (int row = 0; row < size; ++row)
         for (int column = 0; column < size; ++column) {
             const glm::dvec2 p{(column + 0.5) / size * 2.0 - 1.0, 1.0 - (row + 0.5) / size * 2.0};
-            const std::optional<glm::dvec3> d = directionAtDiskPoint(projection, p);
+            const std::optional<glm::dvec3> d = directionAt(p);
             if (!d) continue;
             atlasIndex_[static_cast<std::size_t>(row) * static_cast<std::size_t>(size) +
                         static_cast<std::size_t>(column)] = static_cast<std::int64_t>(layout.pixelIndexOf(*d));
             ++diskPixels_;
         }
+}
+
+std::optional<glm::dvec3> HemisphereViewMap::directionAt(glm::dvec2 imagePoint) const {
+    // Image right = normal x up (a camera looking out along the normal), so the picture is not mirrored.
+    return directionAtDiskPoint(projection_, imagePoint.x * right_ + imagePoint.y * up_);
 }
 
 } // namespace radiant

@@ -31,11 +31,16 @@ std::optional<glm::dvec3> directionAtDiskPoint(HemisphereProjection projection, 
 /// Where a local direction with z >= 0 appears on the unit disk.
 glm::dvec2 diskPointOfDirection(HemisphereProjection projection, const glm::dvec3& localDirection);
 
-/// For a size x size image of the disk (rows top first, +v up, +u right): the hemicube atlas index
-/// each pixel shows, or -1 outside the disk. Computed once per (layout, projection, size).
+/// For a size x size image of the disk (rows top first): the hemicube atlas index each pixel shows,
+/// or -1 outside the disk. The image is what the point would photograph looking out along its
+/// normal: image up is the local horizontal direction at azimuth `upAzimuth` (radians from the
+/// tangent), image right is normal x up. Computed once per (layout, projection, size, up).
 class HemisphereViewMap {
 public:
-    HemisphereViewMap(const HemicubeLayout& layout, HemisphereProjection projection, int size);
+    HemisphereViewMap(const HemicubeLayout& layout, HemisphereProjection projection, int size,
+                      double upAzimuth = 1.5707963267948966);
+    /// The local direction (unit, z = normal) image point (x right, y up, both in [-1, 1]) shows.
+    [[nodiscard]] std::optional<glm::dvec3> directionAt(glm::dvec2 imagePoint) const;
     [[nodiscard]] int size() const { return size_; }
     [[nodiscard]] HemisphereProjection projection() const { return projection_; }
     [[nodiscard]] const std::vector<std::int64_t>& atlasIndex() const { return atlasIndex_; }
@@ -45,6 +50,7 @@ public:
 private:
     HemisphereProjection projection_;
     int size_;
+    glm::dvec2 up_{0, 1}, right_{-1, 0};  ///< image axes in the local tangent plane
     std::vector<std::int64_t> atlasIndex_;
     std::size_t diskPixels_ = 0;
 };

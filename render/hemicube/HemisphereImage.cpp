@@ -5,8 +5,10 @@
 #include <numbers>
 
 #include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "radiometry/hemicube/HemicubeGather.h"
+#include "radiometry/hemisphere/HemisphericalCoordinates.h"
 
 namespace radiant::render {
 namespace {
@@ -31,10 +33,12 @@ const glm::vec3 kOutline{1.0f, 0.8f, 0.0f};
 } // namespace
 
 std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
-                                          std::span<const std::uint32_t> items, const PatchMesh& mesh,
+                                          std::span<const std::uint32_t> items, const glm::dvec3& normal,
+                                          const PatchMesh& mesh,
                                           std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
                                           const HemisphereImageOptions& options) {
     const int size = map.size();
+    const HemisphereFrame frame(normal);
     const std::vector<std::int64_t>& index = map.atlasIndex();
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4, 0);
 
@@ -48,12 +52,17 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
 
     double scale = options.radianceScale;
     if (options.colouring == HemisphereColouring::Radiance && scale <= 0) {
+        // Auto exposure: a few times the mean radiance seen, so a small bright light does not
+        // leave every wall black; the tone curve below keeps the light from clipping harshly.
+        double sum = 0;
+        std::size_t count = 0;
         for (const std::uint32_t item : items)
             if (hemicubeItemIsFront(item) && !radiosity.empty()) {
                 const Rgb& b = radiosity[hemicubeItemPatch(item)];
-                scale = std::max({scale, b.x, b.y, b.z});
+                sum += std::max({b.x, b.y, b.z});
+                ++count;
             }
-        scale /= std::numbers::pi;
+        scale = count > 0 ? 2.0 * sum / static_cast<double>(count) / std::numbers::pi : 0.0;
     }
     const double maxDeltaFormFactor = layout.pixelArea() / std::numbers::pi;
 
@@ -69,14 +78,23 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
             switch (options.colouring) {
             case HemisphereColouring::Surfaces:
                 if (item != kHemicubeEmpty) {
-                    const std::size_t surface = mesh.patches[hemicubeItemPatch(item)].surface;
-                    colour = surface < surfaceColours.size() ? surfaceColours[surface] : glm::vec3(0.5f);
+                    const Patch& patch = mesh.patches[hemicubeItemPatch(item)];
+                    colour = patch.surface < surfaceColours.size() ? surfaceColours[patch.surface] : glm::vec3(0.5f);
+                    // Shaded by the cosine at the surface, so walls of one colour read apart.
+                    const std::size_t a = static_cast<std::size_t>(atlas);
+                    const int w = layout.width();
+                    const glm::dvec3 toward = glm::normalize(frame.toWorld(
+                        layout.pixelDirection(static_cast<int>(a % static_cast<std::size_t>(w)),
+                                              static_cast<int>(a / static_cast<std::size_t>(w)))));
+                    colour *= 0.45f + 0.55f * static_cast<float>(std::abs(glm::dot(toward, patch.normal)));
                     if (!hemicubeItemIsFront(item)) colour *= 0.25f;
                 }
                 break;
             case HemisphereColouring::Radiance:
-                if (hemicubeItemIsFront(item) && !radiosity.empty() && scale > 0)
-                    colour = glm::vec3(radiosity[hemicubeItemPatch(item)] / (std::numbers::pi * scale));
+                if (hemicubeItemIsFront(item) && !radiosity.empty() && scale > 0) {
+                    const glm::vec3 c(radiosity[hemicubeItemPatch(item)] / (std::numbers::pi * scale));
+                    colour = c / (glm::vec3(1.0f) + c);  // Reinhard
+                }
                 else if (item != kHemicubeEmpty)
                     colour = glm::vec3(0.0f);
                 break;
@@ -87,6 +105,7 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
             }
 
             if (options.grid) {
+                // In the disk's own coordinates (any rotation of the image leaves the grid the same).
                 const glm::dvec2 p{(column + 0.5) / size * 2.0 - 1.0, 1.0 - (row + 0.5) / size * 2.0};
                 const double radius = std::hypot(p.x, p.y);
                 bool onGrid = false;

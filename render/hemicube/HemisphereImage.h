@@ -18,8 +18,8 @@
 namespace radiant::render {
 
 enum class HemisphereColouring {
-    Surfaces,        ///< each surface in its material's display colour, backs darkened
-    Radiance,        ///< L = B / pi of the patch seen, scaled so `radianceScale` is white
+    Surfaces,        ///< each surface in its material's display colour, shaded by how squarely it faces the point
+    Radiance,        ///< L = B / pi of the patch seen, L / radianceScale tone-mapped (Reinhard)
     DeltaFormFactor  ///< the hemicube pixel's dF relative to the largest (dA / pi at the zenith)
 };
 
@@ -27,13 +27,15 @@ struct HemisphereImageOptions {
     HemisphereColouring colouring = HemisphereColouring::Surfaces;
     std::optional<std::size_t> targetSurface;  ///< outlined in yellow
     bool grid = true;                          ///< theta every 15 degrees, phi every 30 degrees
-    double radianceScale = 0;                  ///< W/(m^2 sr) shown as white; 0: the brightest pixel
+    double radianceScale = 0;                  ///< W/(m^2 sr) mapped to mid-grey; 0: twice the mean seen
 };
 
 /// RGBA8, map.size() squared pixels, top row first; outside the disk transparent.
 /// `surfaceColours` (linear RGB per surface) is used for Surfaces; `radiosity` (W/m^2 per patch) for Radiance.
+/// `normal` is the hemicube's (world) normal, for shading.
 std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
-                                          std::span<const std::uint32_t> items, const PatchMesh& mesh,
+                                          std::span<const std::uint32_t> items, const glm::dvec3& normal,
+                                          const PatchMesh& mesh,
                                           std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
                                           const HemisphereImageOptions& options);
 

@@ -141,3 +141,117 @@ TEST_CASE("Nusselt view of a square over the point covers its form factor's shar
 }
 
 } // TEST_SUITE
+
+// ---------------------------------------------------------------------------------------------
+// Screenshots of the views and demos for docs/screenshots: not a check, so skipped unless asked:
+//   RADIANT_SCREENSHOT_DIR=docs/screenshots xvfb-run -a -s "-screen 0 1600x1000x24"
+//     radiant_gl_tests -tc="hemisphere screenshots" --no-skip
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <filesystem>
+#include <functional>
+
+#include "app/panels/HemicubeSession.h"
+#include "app/panels/HemispherePanel.h"
+#include "app/panels/IntegralsPanel.h"
+#include "app/panels/demos/LectureDemos.h"
+#include "app/ui/ImGuiLayer.h"
+#include "radiometry/solver/Solver.h"
+#include "render/GlContext.h"
+#include "render/Screenshot.h"
+
+namespace {
+
+/// Draws `panel` alone in a window `width` wide for a few frames, then saves the window's part.
+void shoot(app::Window& window, app::ImGuiLayer& ui, const std::function<void()>& drawPanel, const char* title,
+           const std::filesystem::path& file, int width = 520) {
+    render::ImageRgb8 image;
+    int fbWidth = 0, fbHeight = 0;
+    ImVec2 size{};
+    for (int frame = 0; frame < 4; ++frame) {
+        glfwPollEvents();
+        ui.newFrame();
+        window.framebufferSize(fbWidth, fbHeight);
+        ImGui::SetNextWindowPos({0, 0});
+        ImGui::SetNextWindowSize({static_cast<float>(width), 0});
+        ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoSavedSettings |
+                                         ImGuiWindowFlags_NoCollapse);
+        drawPanel();
+        size = ImGui::GetWindowSize();
+        ImGui::End();
+        render::beginWindowFrame(fbWidth, fbHeight, {0, 0, fbWidth, fbHeight}, {0.075f, 0.08f, 0.09f});
+        render::useWholeWindow(fbWidth, fbHeight);
+        ui.render();
+        if (frame == 3) image = render::readWindowPixels(fbWidth, fbHeight);
+        window.swapBuffers();
+    }
+    // Crop to the panel's window.
+    const int w = std::min(fbWidth, static_cast<int>(size.x)), h = std::min(fbHeight, static_cast<int>(size.y));
+    render::ImageRgb8 cropped{w, h, std::vector<std::uint8_t>(static_cast<std::size_t>(w) * h * 3)};
+    for (int y = 0; y < h; ++y)
+        std::copy_n(image.pixels.begin() + static_cast<std::ptrdiff_t>(y) * image.width * 3, w * 3,
+                    cropped.pixels.begin() + static_cast<std::ptrdiff_t>(y) * w * 3);
+    render::writePng(cropped, file);
+    MESSAGE("wrote ", file.string());
+}
+
+} // namespace
+
+TEST_CASE("hemisphere screenshots" * doctest::skip()) {
+    const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR");
+    REQUIRE_MESSAGE(directory != nullptr, "set RADIANT_SCREENSHOT_DIR");
+    openContext();  // the display check
+    app::Window window({1200, 1000, "hemisphere screenshots", true, false});
+    app::ImGuiLayer ui(window.handle(), 1.0f);
+
+    // A solved Cornell box and a point on its back wall, looking into the box and out of its open front.
+    auto snapshot = std::make_shared<app::Snapshot>();
+    snapshot->generation = 1;
+    snapshot->meshGeneration = 1;
+    snapshot->scene = std::make_shared<const Scene>(makeCornellBox());
+    snapshot->mesh = std::make_shared<const PatchMesh>(meshScene(*snapshot->scene, meshing(0.005)));
+    const std::unique_ptr<Solver> solver = makeSolver(SolverMethod::GaussSeidel, *snapshot->scene, *snapshot->mesh);
+    for (int i = 0; i < 40 && solver->lastStats().residual > 1e-4; ++i) solver->step();
+    snapshot->radiosity = solver->solution();
+    const std::shared_ptr<const app::Snapshot> shown = snapshot;
+    auto session = std::make_shared<app::HemicubeSession>(
+        [shown] { return shown; },
+        [] { return std::optional<app::HemicubePoint>(app::HemicubePoint{{0.278, 0.30, 0.5592}, {0, 0, -1}, 0}); });
+    session->setResolution(256);
+    app::HemispherePanel hemisphere(session);
+    const std::filesystem::path dir(directory);
+    const auto view = [&](HemisphereProjection projection, render::HemisphereColouring colouring, const char* name) {
+        hemisphere.setProjection(projection);
+        hemisphere.setColouring(colouring);
+        hemisphere.update();
+        shoot(window, ui, [&] { hemisphere.draw(); }, "Hemisphere", dir / name);
+    };
+    view(HemisphereProjection::Nusselt, render::HemisphereColouring::Surfaces, "hemisphere-nusselt.png");
+    view(HemisphereProjection::Equidistant, render::HemisphereColouring::Radiance, "hemisphere-fisheye-radiance.png");
+    view(HemisphereProjection::Equisolid, render::HemisphereColouring::DeltaFormFactor, "hemisphere-delta-ff.png");
+
+    app::IntegralsPanel integrals(session);
+    integrals.select(app::HemisphereIntegrand::Irradiance, {app::IntegralMethod::CosineMonteCarlo, 16, 20000, 1});
+    integrals.current().step(3000);
+    shoot(window, ui, [&] { integrals.draw(); }, "Integrals", dir / "hemisphere-integrals.png");
+    integrals.select(app::HemisphereIntegrand::ProjectedSolidAngle, {app::IntegralMethod::UniformMonteCarlo, 16, 20000, 1});
+    integrals.current().step(20000);
+    shoot(window, ui, [&] { integrals.draw(); }, "Integrals", dir / "hemisphere-integrals-uniform.png");
+
+    app::PointSourceDemo pointSource;
+    pointSource.settings.offsetM = 1.5;
+    shoot(window, ui, [&] { pointSource.draw(); }, pointSource.title(), dir / "demo-point-source.png");
+    app::DiffuseEmitterDemo emitter;
+    shoot(window, ui, [&] { emitter.draw(); }, emitter.title(), dir / "demo-diffuse-emitter.png");
+    app::SunDemo sun;
+    shoot(window, ui, [&] { sun.draw(); }, sun.title(), dir / "demo-sun.png", 620);
+    app::SquareSolidAngleDemo square;
+    square.settings.distanceM = 0.6;
+    shoot(window, ui, [&] { square.draw(); }, square.title(), dir / "demo-square-solid-angle.png");
+    app::DodecahedronDemo dodecahedron;
+    shoot(window, ui, [&] { dodecahedron.draw(); }, dodecahedron.title(), dir / "demo-dodecahedron.png");
+    app::RadianceIrradianceDemo radiance;
+    shoot(window, ui, [&] { radiance.draw(); }, radiance.title(), dir / "demo-radiance-irradiance.png");
+}

@@ -50,8 +50,10 @@ void DodecahedronDemo::draw() {
     const RegularSolidNumbers n = regularSolidNumbers(kFaceCounts[static_cast<std::size_t>(faceChoice)]);
     ImGui::Text("4 pi / %d = %.4f sr", n.faces, n.perFace.value());
     ImGui::Text("from one face's corners: %.4f sr", n.polygonRoute.value());
-    ImGui::TextDisabled("whole sphere 4 pi = %.3f sr; dodecahedron face ~ the lecture's 1 sr",
-                        kSphereSolidAngle.value());
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("whole sphere 4 pi = %.3f sr; a dodecahedron face is the lecture's \"1 sr\"",
+                       kSphereSolidAngle.value());
+    ImGui::PopStyleColor();
 }
 
 } // namespace radiant::app

@@ -1,0 +1,25 @@
+#pragma once
+// The six lecture demos under one sidebar header, each in its own collapsible section, so the
+// sidebar stays short on a projector.
+#include <memory>
+#include <vector>
+
+#include "app/panels/Panel.h"
+
+namespace radiant::app {
+
+class LectureDemosPanel final : public Panel {
+public:
+    LectureDemosPanel();
+    [[nodiscard]] const char* title() const override { return "Lecture demos"; }
+    [[nodiscard]] bool openByDefault() const override { return false; }
+    void draw() override;
+    /// Opens one demo's section (by its title) and closes the others; for screenshots.
+    void focus(const char* demoTitle);
+
+private:
+    std::vector<std::unique_ptr<Panel>> demos_;
+    const char* focused_ = nullptr;
+};
+
+} // namespace radiant::app
