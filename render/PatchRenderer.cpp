@@ -353,9 +353,13 @@ void PatchRenderer::refreshColours() const {
         return glm::vec4(glm::vec3(toneMap(b, scale)), static_cast<float>(range.position(total(b))));
     };
     std::vector<glm::vec4> patchColours(n), vertexColours(s.smoothingVertexCount), tints(n, glm::vec4(0.0f));
+    const bool smooth = inputs.shading == Shading::Smooth;
     if (s.hasRadiosity) {
-        for (std::size_t p = 0; p < n; ++p) patchColours[p] = colourOf(s.radiosity[p]);
-        for (std::size_t v = 0; v < vertexColours.size(); ++v) vertexColours[v] = colourOf(s.smoothRadiosity[v]);
+        // Only the shading shown: the tone curve is most of this function's time.
+        if (smooth)
+            for (std::size_t v = 0; v < vertexColours.size(); ++v) vertexColours[v] = colourOf(s.smoothRadiosity[v]);
+        else
+            for (std::size_t p = 0; p < n; ++p) patchColours[p] = colourOf(s.radiosity[p]);
     } else {
         for (std::size_t p = 0; p < n; ++p) {
             const glm::vec3 encoded(static_cast<float>(linearToSrgb(s.baseColour[p].x)),
@@ -374,7 +378,6 @@ void PatchRenderer::refreshColours() const {
         tints[p] = glm::vec4(glm::vec3(tint), tint.w + (isShooter ? 2.0f : 0.0f));
     }
     // Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
-    const bool smooth = inputs.shading == Shading::Smooth;
     std::vector<DisplayVertex> drawn(s.drawnPatch.size());
     for (std::size_t v = 0; v < drawn.size(); ++v)
         drawn[v] = {smooth ? vertexColours[s.drawnSmoothing[v]] : patchColours[s.drawnPatch[v]], tints[s.drawnPatch[v]]};
