@@ -1,6 +1,7 @@
 #include "radiometry/scene/GltfAccessors.h"
 
 #include <cmath>
+#include <cstdio>
 #include <cstring>
 
 namespace radiant::detail {
@@ -8,6 +9,13 @@ namespace {
 
 SourceLocation at(const SourceLocation& where, const std::string& what) {
     return {where.file, where.element.empty() ? what : where.element + ", " + what};
+}
+
+/// A byte count from file values, which may not fit in 64 bits.
+std::string bytesText(double bytes) {
+    char text[40];
+    std::snprintf(text, sizeof text, "%.0f", bytes);
+    return text;
 }
 
 /// The accessor's bytes: pointer to element 0 and the stride, after checking every range.
@@ -35,16 +43,21 @@ AccessorBytes locate(const tinygltf::Model& model, int index, int expectedType, 
         throw RadiantError(at(where, name), "buffer " + std::to_string(view.buffer) + " out of range (buffer count " +
                                                 std::to_string(model.buffers.size()) + ")");
     const tinygltf::Buffer& buffer = model.buffers[static_cast<std::size_t>(view.buffer)];
-    if (view.byteOffset + view.byteLength > buffer.data.size())
+    // Written so that no sum can wrap around: offsets and lengths come straight from the file.
+    if (view.byteOffset > buffer.data.size() || view.byteLength > buffer.data.size() - view.byteOffset)
         throw RadiantError(at(where, name), "buffer view " + std::to_string(accessor.bufferView) + " needs bytes up to " +
-                                                std::to_string(view.byteOffset + view.byteLength) + " but buffer " +
+                                                bytesText(static_cast<double>(view.byteOffset) + static_cast<double>(view.byteLength)) + " but buffer " +
                                                 std::to_string(view.buffer) + " has " + std::to_string(buffer.data.size()));
     const std::size_t stride = view.byteStride != 0 ? view.byteStride : elementSize;
     if (stride < elementSize) throw RadiantError(at(where, name), "byte stride " + std::to_string(stride) + " is smaller than an element");
     if (accessor.count > 0) {
-        const std::size_t end = accessor.byteOffset + stride * (accessor.count - 1) + elementSize;
-        if (end > view.byteLength)
-            throw RadiantError(at(where, name), std::to_string(accessor.count) + " elements need " + std::to_string(end) +
+        const std::size_t room = view.byteLength >= elementSize ? view.byteLength - elementSize : 0;
+        const bool fits = view.byteLength >= elementSize && accessor.byteOffset <= room &&
+                          accessor.count - 1 <= (room - accessor.byteOffset) / stride;
+        const double end = static_cast<double>(accessor.byteOffset) +
+                           static_cast<double>(stride) * static_cast<double>(accessor.count - 1) + static_cast<double>(elementSize);
+        if (!fits)
+            throw RadiantError(at(where, name), std::to_string(accessor.count) + " elements need " + bytesText(end) +
                                                     " bytes but buffer view " + std::to_string(accessor.bufferView) + " has " +
                                                     std::to_string(view.byteLength));
     }

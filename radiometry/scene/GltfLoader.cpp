@@ -149,6 +149,10 @@ private:
             throw RadiantError({path_, "node " + std::to_string(node)},
                                "out of range (node count " + std::to_string(model_.nodes.size()) + ")");
         if (depth > 256) throw RadiantError({path_, "node " + std::to_string(node)}, "the node hierarchy has a cycle or is deeper than 256");
+        // A node may be the child of many nodes, so a small file can expand exponentially.
+        if (++nodeVisits_ > kMaxNodeInstances)
+            throw BudgetError({path_, "node " + std::to_string(node)},
+                              "the node hierarchy expands to more than " + describe(static_cast<double>(kMaxNodeInstances)) + " node instances");
         const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(node)];
         const glm::dmat4 world = parent * localTransform(n);
         if (n.mesh >= 0) instances.push_back({node, world});
@@ -266,6 +270,8 @@ private:
     LoadedScene result_;
     std::map<int, std::size_t> materialOf_;
     std::map<std::string, int> nameUses_;
+    static constexpr std::size_t kMaxNodeInstances = 100'000;
+    std::size_t nodeVisits_ = 0;
     std::size_t droppedTriangles_ = 0;
     std::string firstDropped_;
 };
