@@ -185,7 +185,9 @@ ProgressiveShooters blockShooters(const PatchMesh& mesh, std::size_t block) {
                 continue;
             }
         }
-        const auto [nu, nv] = block == 1 ? std::array<std::size_t, 2>{1, 1} : gridAt(mesh, start);
+        // Not a structured binding: clang 14 cannot capture those in the lambda below.
+        const std::array<std::size_t, 2> grid = block == 1 ? std::array<std::size_t, 2>{1, 1} : gridAt(mesh, start);
+        const std::size_t nu = grid[0], nv = grid[1];
         for (std::size_t j0 = 0; j0 < nv; j0 += block) {
             for (std::size_t i0 = 0; i0 < nu; i0 += block) {
                 const std::size_t i1 = std::min(nu, i0 + block) - 1, j1 = std::min(nv, j0 + block) - 1;
