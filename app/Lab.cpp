@@ -12,7 +12,11 @@
 #include <optional>
 
 #include "app/panels/DisplayPanel.h"
+#include "app/panels/HemicubeSession.h"
+#include "app/panels/HemispherePanel.h"
 #include "app/panels/InfoPanel.h"
+#include "app/panels/IntegralsPanel.h"
+#include "app/panels/demos/LectureDemosPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
 #include "app/panels/ScenePanel.h"
@@ -108,6 +112,17 @@ struct Lab::State {
         sidebar.add(std::move(probe));
         sidebar.add(std::make_unique<DisplayPanel>(display, [this] { return patches->legend(); }));
         sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote()));
+        // The hemicube over the probe's pick, shared by the Hemisphere and Integrals panels.
+        auto hemicube = std::make_shared<HemicubeSession>(
+            [this] { return live.current; },
+            [this]() -> std::optional<HemicubePoint> {
+                const std::optional<ProbePick>& pick = probePanel->picked();
+                if (!pick || pick->meshGeneration != live.snapshot().meshGeneration) return std::nullopt;
+                return HemicubePoint{pick->point, pick->normal, pick->surface};
+            });
+        sidebar.add(std::make_unique<HemispherePanel>(hemicube));
+        sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
+        sidebar.add(std::make_unique<LectureDemosPanel>());
 
         live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
         if (options.runOnStart) live.send(command::Run{});

@@ -28,6 +28,7 @@ public:
     ~HemispherePanel() override;
 
     [[nodiscard]] const char* title() const override { return "Hemisphere"; }
+    [[nodiscard]] bool openByDefault() const override { return false; }
     void update() override;
     void draw() override;
 
