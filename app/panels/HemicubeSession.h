@@ -51,7 +51,7 @@ public:
 private:
     SnapshotSource snapshots_;
     PointSource points_;
-    int resolution_ = 128;
+    int resolution_ = 256;  ///< a small light (the Cornell box's) needs ~256 to come within a few per cent
     std::shared_ptr<const Snapshot> snapshot_;
     std::optional<HemicubePoint> point_;
     std::unique_ptr<render::HemicubeRenderer> renderer_;

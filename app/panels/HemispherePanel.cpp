@@ -174,8 +174,9 @@ void HemispherePanel::draw() {
         // ImGui's texture handle is the GL texture name (imgui_impl_opengl3's convention).
         ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture_->id())), {side, side});  // NOLINT
     }
-    ImGui::TextDisabled("%s, %d x %d x 3 hemicube, %.1f ms", projectionName(projection_), capture.layout.width(),
-                        capture.layout.width(), session_->lastRenderSeconds() * 1e3);
+    ImGui::TextDisabled("%s", projectionName(projection_));
+    ImGui::TextDisabled("hemicube %d x %d x 3: %.1f ms", capture.layout.width(), capture.layout.width(),
+                        session_->lastRenderSeconds() * 1e3);
     if (projection_ == HemisphereProjection::Nusselt)
         ImGui::TextWrapped("Share of the disk a surface covers = its form factor.");
     else if (projection_ == HemisphereProjection::Equisolid)
@@ -206,7 +207,7 @@ void HemispherePanel::draw() {
             ImGui::TextDisabled("hemicube F differs by %+.2f %%", 100.0 * (c.hemicubeFormFactor / c.exact.formFactor - 1.0));
     }
     const Rgb e = session_->gathered().irradiance.value();
-    ImGui::Text("E = sum B_j F_j = (%.4g, %.4g, %.4g) W/m^2", e.x, e.y, e.z);
+    ImGui::TextWrapped("E = sum B_j F_j = (%.4g, %.4g, %.4g) W/m^2", e.x, e.y, e.z);
     ImGui::TextDisabled("sum of delta F = %.5f (sky %.4f, backs %.4f)", session_->gathered().totalFormFactor,
                         session_->gathered().openFormFactor, session_->gathered().backFaceFormFactor);
 }

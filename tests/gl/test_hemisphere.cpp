@@ -255,3 +255,25 @@ TEST_CASE("hemisphere screenshots" * doctest::skip()) {
     app::RadianceIrradianceDemo radiance;
     shoot(window, ui, [&] { radiance.draw(); }, radiance.title(), dir / "demo-radiance-irradiance.png");
 }
+
+#include "app/Lab.h"
+#include "render/camera/Camera.h"
+
+TEST_CASE("hemisphere panel in the lab, screenshot" * doctest::skip()) {
+    const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR");
+    REQUIRE_MESSAGE(directory != nullptr, "set RADIANT_SCREENSHOT_DIR");
+    app::LabOptions options;
+    options.width = 1400;
+    options.height = 1000;
+    options.vsync = false;
+    app::Lab lab(options);
+    for (int i = 0; i < 600 && !(lab.snapshot()->stats.iteration > 0 && !lab.snapshot()->running); ++i) lab.frame();
+    REQUIRE(lab.snapshot()->stats.iteration > 0);
+    const glm::dvec3 floorPoint{0.42, 0.0, 0.12};
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
+    REQUIRE(lab.clickAt({pixel.x, pixel.y}));
+    lab.focusPanel("Hemisphere");
+    render::ImageRgb8 image;
+    for (int i = 0; i < 6; ++i) image = lab.frameAndCapture();
+    render::writePng(image, std::filesystem::path(directory) / "hemisphere-lab.png");
+}
