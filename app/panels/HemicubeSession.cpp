@@ -41,6 +41,7 @@ void HemicubeSession::update() {
         const auto start = std::chrono::steady_clock::now();
         capture_ = renderer_->capture(point->point, point->normal, resolution_);
         lastRenderSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+        ++captureVersion_;
     }
     const std::span<const Rgb> radiosity = snapshot_->radiosity.size() == snapshot_->mesh->size()
                                                ? std::span<const Rgb>(snapshot_->radiosity)

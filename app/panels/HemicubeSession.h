@@ -42,6 +42,8 @@ public:
     [[nodiscard]] const std::optional<HemicubePoint>& point() const { return point_; }
     /// Increases whenever capture() or gathered() changed: views re-colour only then.
     [[nodiscard]] std::uint64_t version() const { return version_; }
+    /// Increases only when the item buffer was re-rendered (point, mesh or resolution changed).
+    [[nodiscard]] std::uint64_t captureVersion() const { return captureVersion_; }
     [[nodiscard]] double lastRenderSeconds() const { return lastRenderSeconds_; }
 
     /// L = B / pi (W/(m^2 sr), per band) of the patch seen along a direction in the point's local
@@ -60,6 +62,7 @@ private:
     HemicubeGatherResult gathered_;
     std::uint64_t capturedGeneration_ = 0;
     std::uint64_t version_ = 0;
+    std::uint64_t captureVersion_ = 0;
     double lastRenderSeconds_ = 0;
 };
 

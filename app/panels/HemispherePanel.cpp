@@ -76,7 +76,12 @@ void HemispherePanel::update() {
     }
     if (dirty_ || colouredVersion_ != session_->version()) {
         recolour();
-        remeasure();
+        // Solid angles and form factors are geometry: a new solve step changes none of them.
+        if (measuredCapture_ != session_->captureVersion() || measuredTarget_ != target_) {
+            remeasure();
+            measuredCapture_ = session_->captureVersion();
+            measuredTarget_ = target_;
+        }
         colouredVersion_ = session_->version();
         dirty_ = false;
     }

@@ -58,6 +58,8 @@ private:
     std::optional<HemisphereViewMap> map_;
     int mapResolution_ = 0;
     std::uint64_t colouredVersion_ = 0;
+    std::uint64_t measuredCapture_ = 0;           ///< the geometric readings depend on the items alone
+    std::optional<std::size_t> measuredTarget_;
     bool dirty_ = true;
     std::optional<Comparison> comparison_;
 };
