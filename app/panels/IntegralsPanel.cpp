@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <functional>
 #include <numbers>
 
 #include "radiometry/solidangle/ClosedFormSolidAngles.h"
@@ -26,6 +28,7 @@ const ImU32 kSample = IM_COL32(255, 200, 40, 200);
 const ImU32 kNewest = IM_COL32(255, 90, 60, 255);
 const ImU32 kErrorColour = IM_COL32(90, 200, 255, 255);
 const ImU32 kReference = IM_COL32(220, 220, 220, 160);
+const ImU32 kRiemann = IM_COL32(120, 220, 120, 255);
 
 } // namespace
 
@@ -41,25 +44,38 @@ void IntegralsPanel::rebuild() {
     running_ = false;
     const bool irradiance = integrand_ == HemisphereIntegrand::Irradiance && session_ && session_->ready();
     if (integrand_ == HemisphereIntegrand::Irradiance && !irradiance) integrand_ = HemisphereIntegrand::ProjectedSolidAngle;
+    std::function<double(const glm::dvec3&)> f;
+    double exact = 0;
     switch (integrand_) {
     case HemisphereIntegrand::SolidAngle:
-        run_ = std::make_unique<HemisphereIntegralRun>([](const glm::dvec3&) { return 1.0; },
-                                                       kHemisphereSolidAngle.value(), settings_);
+        f = [](const glm::dvec3&) { return 1.0; };
+        exact = kHemisphereSolidAngle.value();
         break;
     case HemisphereIntegrand::ProjectedSolidAngle:
-        run_ = std::make_unique<HemisphereIntegralRun>([](const glm::dvec3& d) { return d.z; },
-                                                       kHemisphereProjectedSolidAngle.value(), settings_);
+        f = [](const glm::dvec3& d) { return d.z; };
+        exact = kHemisphereProjectedSolidAngle.value();
         break;
     case HemisphereIntegrand::Irradiance: {
         // The reference is the hemicube's own quadrature, sum_j B_j F_j: the same L, integrated finely.
         const int band = band_;
         std::shared_ptr<HemicubeSession> session = session_;
-        const double exact = session->gathered().irradiance.value()[band];
-        run_ = std::make_unique<HemisphereIntegralRun>(
-            [session, band](const glm::dvec3& d) { return session->radianceToward(d)[band] * d.z; }, exact, settings_);
+        exact = session->gathered().irradiance.value()[band];
+        f = [session, band](const glm::dvec3& d) { return session->radianceToward(d)[band] * d.z; };
         break;
     }
     }
+    run_ = std::make_unique<HemisphereIntegralRun>(f, exact, settings_);
+    // A Riemann sum is only an estimate once complete, so its convergence is shown across grids:
+    // the error of each full sum against its cell count N = 4 t^2 (slope -1: O(h^2) = O(1/N)).
+    riemannSeries_.clear();
+    if (settings_.method == IntegralMethod::Riemann)
+        for (const int t : {1, 2, 3, 4, 6, 8, 11, 16, 23, 32, 45, 64}) {
+            IntegralSettings grid = settings_;
+            grid.thetaCells = t;
+            HemisphereIntegralRun full(f, exact, grid);
+            full.step(full.total());
+            riemannSeries_.push_back(full.errorHistory().back());
+        }
 }
 
 void IntegralsPanel::update() {
@@ -182,8 +198,17 @@ void IntegralsPanel::drawErrorPlot(float width, float height) const {
                       toScreen(static_cast<double>(history[i].samples), history[i].absoluteError / scale), kErrorColour, 1.5f);
     for (const ErrorPoint& p : history)
         draw->AddCircleFilled(toScreen(static_cast<double>(p.samples), p.absoluteError / scale), 2.0f, kErrorColour);
+    for (std::size_t i = 0; i < riemannSeries_.size(); ++i) {
+        const ImVec2 p = toScreen(static_cast<double>(riemannSeries_[i].samples), riemannSeries_[i].absoluteError / scale);
+        if (i > 0)
+            draw->AddLine(toScreen(static_cast<double>(riemannSeries_[i - 1].samples),
+                                   riemannSeries_[i - 1].absoluteError / scale),
+                          p, kRiemann, 1.5f);
+        draw->AddCircleFilled(p, 2.5f, kRiemann);
+    }
     ImGui::Dummy({width, height});
-    ImGui::TextDisabled("|error| / exact against N (blue); grey: s / sqrt(N)");
+    ImGui::TextDisabled("|error| / exact against N: this run (blue), grey s / sqrt(N)");
+    if (!riemannSeries_.empty()) ImGui::TextDisabled("green: full Riemann sums on 1 .. 64 theta cells (~ 1/N)");
 }
 
 } // namespace radiant::app

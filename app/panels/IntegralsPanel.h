@@ -6,6 +6,7 @@
 // plotted against the sample count on log-log axes beside the 1/sqrt(N) line.
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "app/panels/HemicubeSession.h"
 #include "app/panels/HemisphereIntegralRun.h"
@@ -42,6 +43,7 @@ private:
     int samplesPerFrame_ = 20;
     bool running_ = false;
     std::unique_ptr<HemisphereIntegralRun> run_;
+    std::vector<ErrorPoint> riemannSeries_;  ///< Riemann: one point per full grid
 };
 
 } // namespace radiant::app

@@ -239,6 +239,9 @@ TEST_CASE("hemisphere screenshots" * doctest::skip()) {
     integrals.select(app::HemisphereIntegrand::ProjectedSolidAngle, {app::IntegralMethod::UniformMonteCarlo, 16, 20000, 1});
     integrals.current().step(20000);
     shoot(window, ui, [&] { integrals.draw(); }, "Integrals", dir / "hemisphere-integrals-uniform.png");
+    integrals.select(app::HemisphereIntegrand::ProjectedSolidAngle, {app::IntegralMethod::Riemann, 8, 0, 1});
+    integrals.current().step(integrals.current().total());
+    shoot(window, ui, [&] { integrals.draw(); }, "Integrals", dir / "hemisphere-integrals-riemann.png");
 
     app::PointSourceDemo pointSource;
     pointSource.settings.offsetM = 1.5;
