@@ -16,6 +16,7 @@
 #include "radiometry/probe/Probe.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "render/hemicube/HemicubeRenderer.h"
+#include "render/hemicube/HemisphereImage.h"
 
 using namespace radiant;
 
@@ -137,6 +138,21 @@ TEST_CASE("Nusselt view of a square over the point covers its form factor's shar
         const double exact = 4 * cornerFormFactor(half, half, 1.0);
         INFO("square of half-width ", half, " at 1 m: disk share ", covered, ", closed-form F ", exact);
         CHECK(covered == relativeTo(exact, 0.01));
+        // The picture itself: the square drawn pure red on the sky, no grid, no outline; count its pixels.
+        render::HemisphereImageOptions look;
+        look.grid = false;
+        const std::vector<glm::vec3> red{{1.0f, 0.0f, 0.0f}};
+        const std::vector<std::uint8_t> rgba =
+            render::hemisphereImage(nusselt, capture.layout, capture.items, capture.normal, mesh, red, {}, look);
+        std::size_t disk = 0, square = 0;
+        for (std::size_t p = 0; p < rgba.size(); p += 4) {
+            if (rgba[p + 3] == 0) continue;  // outside the disk
+            ++disk;
+            if (rgba[p] > 60 && rgba[p + 1] < 10) ++square;
+        }
+        const double imageShare = static_cast<double>(square) / static_cast<double>(disk);
+        INFO("the rendered Nusselt image: ", square, " red of ", disk, " disk pixels = ", imageShare);
+        CHECK(imageShare == relativeTo(exact, 0.01));
     }
 }
 
