@@ -75,7 +75,6 @@ private:
     double measureSeconds_ = 0;
     bool dirty_ = false;  ///< the pick or target changed since the last measurement started
     std::future<Measured> job_;
-    std::uint64_t jobGeneration_ = 0;
     std::chrono::steady_clock::time_point lastStart_{};
 };
 
