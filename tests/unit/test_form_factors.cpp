@@ -97,8 +97,9 @@ TEST_CASE("the oracles reproduce the catalog's published values") {
 }
 
 TEST_CASE("point to polygon: differential area to the corner of a parallel rectangle, to 1e-6") {
-    for (const auto [a, b, c] : std::array<std::array<double, 3>, 5>{
+    for (const auto& values : std::array<std::array<double, 3>, 5>{
              {{1, 1, 1}, {2, 0.5, 1}, {0.1, 3, 0.7}, {5, 5, 0.2}, {0.01, 0.02, 1}}}) {
+        const double a = values[0], b = values[1], c = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         const std::array<glm::dvec3, 4> rectangle{{{0, 0, c}, {0, b, c}, {a, b, c}, {a, 0, c}}};  // faces -z
         CAPTURE(a);
         CAPTURE(b);
@@ -111,8 +112,9 @@ TEST_CASE("point to polygon: differential area to the corner of a parallel recta
 }
 
 TEST_CASE("point to polygon: a fine regular polygon approaches the coaxial disk r^2/(h^2+r^2)") {
-    for (const auto [r, h] : std::array<std::array<double, 2>, 4>{{{1, 1}, {0.3, 2}, {2, 0.5}, {10, 1}}}) {
+    for (const auto & values : std::array<std::array<double, 2>, 4>{{{1, 1}, {0.3, 2}, {2, 0.5}, {10, 1}}}) {
         for (const std::size_t sides : {64u, 512u, 4096u}) {
+        const double r = values[0], h = values[1];  // not a structured binding: clang 14 cannot CAPTURE those
             std::vector<glm::dvec3> polygon(sides);
             for (std::size_t k = 0; k < sides; ++k) {
                 const double angle = -2 * pi * static_cast<double>(k) / static_cast<double>(sides);  // faces -z
@@ -133,8 +135,9 @@ TEST_CASE("point to polygon: a fine regular polygon approaches the coaxial disk 
 TEST_CASE("point to polygon: the part below the tangent plane is clipped away") {
     // A rectangle in the plane y = c facing x, reaching from depth d below x's tangent plane to
     // height b above it: only the part above counts (Howell's perpendicular-element formula).
-    for (const auto [a, b, c, d] : std::array<std::array<double, 4>, 4>{
+    for (const auto & values : std::array<std::array<double, 4>, 4>{
              {{1, 1, 1, 0.5}, {2, 0.3, 0.5, 3}, {0.2, 4, 1.5, 0.01}, {1, 1, 1, 0}}}) {
+        const double a = values[0], b = values[1], c = values[2], d = values[3];  // not a structured binding: clang 14 cannot CAPTURE those
         const std::array<glm::dvec3, 4> rectangle{{{0, c, -d}, {a, c, -d}, {a, c, b}, {0, c, b}}};  // faces -y
         CAPTURE(a);
         CAPTURE(b);
@@ -172,8 +175,9 @@ TEST_CASE("point to polygon: a tilted tangent plane through a polygon matches br
 }
 
 TEST_CASE("patch to patch: parallel directly opposed rectangles within 0.2%") {
-    for (const auto [a, b, c] : std::array<std::array<double, 3>, 6>{
+    for (const auto & values : std::array<std::array<double, 3>, 6>{
              {{1, 1, 1}, {1, 1.5, 0.5}, {2, 0.5, 0.3}, {0.2, 0.3, 2}, {1, 1, 0.05}, {3, 1, 10}}}) {
+        const double a = values[0], b = values[1], c = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         const double expected = parallelRectangles(a, b, c);
         const double F = formFactor(parallelFrom(a, b), parallelTo(a, b, c), nullptr);
         CAPTURE(a);
@@ -186,8 +190,9 @@ TEST_CASE("patch to patch: parallel directly opposed rectangles within 0.2%") {
 }
 
 TEST_CASE("patch to patch: perpendicular rectangles sharing an edge within 0.2%") {
-    for (const auto [w, h, l] : std::array<std::array<double, 3>, 6>{
+    for (const auto & values : std::array<std::array<double, 3>, 6>{
              {{1, 1, 1}, {0.5, 2, 1}, {2, 0.5, 1}, {0.1, 1, 1}, {3, 3, 0.5}, {1, 0.05, 2}}}) {
+        const double w = values[0], h = values[1], l = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         // from: w x l in z = 0 (y in [0, w]); to: h x l in y = 0 (z in [0, h]); shared edge along x.
         const PatchPolygon from = polygonFacing({{0, 0, 0}, {l, 0, 0}, {l, w, 0}, {0, w, 0}}, {0, 0, 1});
         const PatchPolygon to = polygonFacing({{0, 0, 0}, {l, 0, 0}, {l, 0, h}, {0, 0, h}}, {0, 1, 0});
