@@ -11,6 +11,8 @@ enum class Shading {
 enum class ColourMode {
     ToneMapped,   ///< exposure, ACES-fitted tone curve, sRGB-encoded: what an eye would see
     FalseColour,  ///< luminance in W/m^2 through the viridis colour map, with a legend
+    Reflectance,  ///< each surface in its material's reflectance (sRGB), whatever the solution: the
+                  ///< scene as built, to compare with what light makes of it
 };
 
 struct DisplaySettings {

@@ -354,7 +354,7 @@ void PatchRenderer::refreshColours() const {
     };
     std::vector<glm::vec4> patchColours(n), vertexColours(s.smoothingVertexCount), tints(n, glm::vec4(0.0f));
     const bool smooth = inputs.shading == Shading::Smooth;
-    if (s.hasRadiosity) {
+    if (s.hasRadiosity && inputs.mode != ColourMode::Reflectance) {
         // Only the shading shown: the tone curve is most of this function's time.
         if (smooth)
             for (std::size_t v = 0; v < vertexColours.size(); ++v) vertexColours[v] = colourOf(s.smoothRadiosity[v]);

@@ -49,10 +49,17 @@ void DisplayPanel::draw() {
     help("Each patch shows its own radiosity: the solver's unknowns as they are.");
     s.shading = shading == 0 ? render::Shading::Smooth : render::Shading::Flat;
 
-    bool falseColour = s.colourMode == render::ColourMode::FalseColour;
-    ImGui::Checkbox("False colour", &falseColour);
+    int colour = static_cast<int>(s.colourMode);
+    ImGui::RadioButton("light", &colour, static_cast<int>(render::ColourMode::ToneMapped));
+    help("Radiosity through the exposure and tone curve: what an eye would see.");
+    ImGui::SameLine();
+    ImGui::RadioButton("false colour", &colour, static_cast<int>(render::ColourMode::FalseColour));
     help("Total radiosity B_r + B_g + B_b in W/m\xC2\xB2 through the viridis colour map.");
-    s.colourMode = falseColour ? render::ColourMode::FalseColour : render::ColourMode::ToneMapped;
+    ImGui::SameLine();
+    ImGui::RadioButton("reflectance", &colour, static_cast<int>(render::ColourMode::Reflectance));
+    help("Each surface in its material's reflectance: the scene as built, before light.");
+    s.colourMode = static_cast<render::ColourMode>(colour);
+    const bool falseColour = s.colourMode == render::ColourMode::FalseColour;
     if (falseColour) {
         ImGui::Indent();
         ImGui::Checkbox("Log scale", &s.logScale);

@@ -153,8 +153,7 @@ ProbeReading Probe::measure(const SurfacePoint& at, const glm::dvec3& n, std::sp
     ProbeReading reading;
     reading.at = at;
     reading.normal = unitNormal(n);
-    const std::vector<Rgb> vertexValues = vertexRadiosity(mesh_, radiosity);
-    reading.radiosity = RadiosityRgb(interpolateRadiosity(mesh_, at.patch, at.point, vertexValues));
+    reading.radiosity = RadiosityRgb(interpolateRadiosity(mesh_, radiosity, at.patch, at.point));
     reading.radiance = radianceFromRadiosity(reading.radiosity);
     reading.irradiance = irradiance(at, reading.normal, radiosity);
     if (targetSurface) reading.target = target(at, reading.normal, *targetSurface);

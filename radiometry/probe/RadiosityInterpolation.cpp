@@ -1,6 +1,7 @@
 #include "radiometry/probe/RadiosityInterpolation.h"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -68,6 +69,37 @@ Rgb interpolateRadiosity(const PatchMesh& mesh, std::size_t patch, const glm::dv
     const auto w = wachspressCoordinates(std::span(corners.data(), p.cornerCount), p.normal, point);
     Rgb value(0.0);
     for (std::size_t c = 0; c < p.cornerCount; ++c) value += w[c] * vertexValues[p.corners[c]];
+    return value;
+}
+
+Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadiosity, std::size_t patch,
+                         const glm::dvec3& point) {
+    if (patchRadiosity.size() != mesh.patches.size())
+        throw RadiantError({"", "radiosity interpolation"},
+                           "the solution has " + std::to_string(patchRadiosity.size()) + " values for " +
+                               std::to_string(mesh.patches.size()) + " patches");
+    const Patch& p = mesh.patches.at(patch);
+    // Coplanar within a relative angle and offset tolerance: the faces of one wall may be split.
+    constexpr double kCosTolerance = 1e-9;
+    const double offsetTolerance = 1e-9 + 1e-6 * std::sqrt(p.area);
+    std::array<Rgb, 4> sum{};
+    std::array<double, 4> weight{};
+    for (std::uint32_t q = mesh.surfaceFirstPatch[p.surface]; q < mesh.surfaceFirstPatch[p.surface + 1]; ++q) {
+        const Patch& other = mesh.patches[q];
+        if (glm::dot(other.normal, p.normal) < 1.0 - kCosTolerance) continue;
+        if (std::abs(glm::dot(p.normal, other.centroid - p.centroid)) > offsetTolerance) continue;
+        for (std::size_t c = 0; c < p.cornerCount; ++c)
+            for (std::size_t k = 0; k < other.cornerCount; ++k)
+                if (other.corners[k] == p.corners[c]) {
+                    sum[c] += other.area * patchRadiosity[q];
+                    weight[c] += other.area;
+                }
+    }
+    std::array<glm::dvec3, 4> corners{};
+    for (std::size_t c = 0; c < p.cornerCount; ++c) corners[c] = mesh.vertices[p.corners[c]];
+    const auto w = wachspressCoordinates(std::span(corners.data(), p.cornerCount), p.normal, point);
+    Rgb value(0.0);
+    for (std::size_t c = 0; c < p.cornerCount; ++c) value += w[c] * (sum[c] / weight[c]);  // weight >= p.area > 0
     return value;
 }
 

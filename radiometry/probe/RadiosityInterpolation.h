@@ -27,7 +27,13 @@ std::vector<Rgb> vertexRadiosity(const PatchMesh& mesh, std::span<const Rgb> pat
 std::array<double, 4> wachspressCoordinates(std::span<const glm::dvec3> corners, const glm::dvec3& normal,
                                             const glm::dvec3& point);
 
-/// The interpolated radiosity at `point` on `patch`, from vertexRadiosity()'s values.
+/// The interpolated radiosity at `point` on `patch`. Each corner takes the area-weighted mean of the
+/// patches of the same surface that share that corner AND the patch's plane, so a value never bleeds
+/// around a crease (a block's top into its sides), as the display's smoothing does too.
+Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadiosity, std::size_t patch,
+                         const glm::dvec3& point);
+
+/// The interpolated radiosity at `point` on `patch`, from vertexRadiosity()'s values (planar surfaces).
 Rgb interpolateRadiosity(const PatchMesh& mesh, std::size_t patch, const glm::dvec3& point,
                          std::span<const Rgb> vertexValues);
 

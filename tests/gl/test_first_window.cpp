@@ -4,11 +4,13 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdlib>
 #include <glm/vec3.hpp>
 #include <string>
 
 #include "app/Lab.h"
+#include "app/solver/Snapshot.h"
 #include "render/camera/Camera.h"
 
 using radiant::app::Lab;
@@ -119,6 +121,14 @@ void checkCornellImage(const ImageRgb8& image, const radiant::render::Camera& ca
     CHECK(outside.max() < 40);
 }
 
+/// The solver thread meshes the scene while the window already draws: wait (bounded) until a frame
+/// has drawn the mesh.
+void waitForMesh(Lab& lab) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+    while (!(lab.snapshot() && lab.snapshot()->mesh) && std::chrono::steady_clock::now() < deadline) lab.frame();
+    REQUIRE_MESSAGE(lab.snapshot()->mesh, "the solver thread did not mesh the Cornell box within 60 s");
+}
+
 } // namespace
 
 TEST_SUITE("gl window") {
@@ -130,6 +140,9 @@ TEST_CASE("the first window draws the Cornell box as the Cornell camera sees it"
     options.height = 600;
     options.showPanels = false;
     Lab lab(options);
+    // The layout check reads material colours: show reflectance, not the (still dark) solution.
+    lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    waitForMesh(lab);
     CHECK(lab.glInfo().major * 10 + lab.glInfo().minor >= 33);
     ImageRgb8 image;
     for (int i = 0; i < 3; ++i) image = lab.frameAndCapture();
@@ -147,6 +160,9 @@ TEST_CASE("with the panels docked on the left the box keeps its layout in the re
     options.width = 1200;
     options.height = 700;
     Lab lab(options);
+    // The layout check reads material colours: show reflectance, not the (still dark) solution.
+    lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    waitForMesh(lab);
     ImageRgb8 image;
     for (int i = 0; i < 3; ++i) image = lab.frameAndCapture();
     const Viewport view = lab.sceneViewport();
@@ -163,6 +179,9 @@ TEST_CASE("an offscreen capture matches the Cornell layout at a size unlike the 
     options.height = 400;
     options.showPanels = false;
     Lab lab(options);
+    // The layout check reads material colours: show reflectance, not the (still dark) solution.
+    lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    waitForMesh(lab);
     lab.frame();
     const ImageRgb8 image = lab.renderOffscreen(500, 360);
     REQUIRE(image.width == 500);

@@ -173,6 +173,30 @@ TEST_CASE("radiosity interpolation reproduces a linear field inside a surface an
     CHECK(w[2] == doctest::Approx(0.25));
 }
 
+TEST_CASE("radiosity does not bleed around a crease of one surface") {
+    // One surface folded into an L: a floor square and a wall square sharing an edge. The floor
+    // carries B = 1 and the wall B = 5; near the shared edge the floor must still read 1.
+    Scene scene;
+    scene.name = "fold";
+    scene.materials.push_back({"grey", Rgb(0.5), ExitanceRgb{}});
+    Face floor, wall;
+    floor.vertices = {{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}};
+    wall.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+    floor.updateGeometry();
+    wall.updateGeometry();
+    REQUIRE(floor.normal.y == doctest::Approx(1.0));
+    REQUIRE(wall.normal.z == doctest::Approx(1.0));
+    scene.surfaces.push_back({"fold", 0, {floor, wall}, "test"});
+    const PatchMesh mesh = meshScene(scene, meshing(0.04));
+    std::vector<Rgb> b(mesh.size());
+    for (std::size_t p = 0; p < mesh.size(); ++p) b[p] = Rgb(mesh.patches[p].face == 0 ? 1.0 : 5.0);
+    const Probe probe(scene, mesh, nullptr);
+    const ProbeReading onFloor = probe.measure(glm::dvec3(0.5, 0, 0.01), {0, 1, 0}, b);
+    const ProbeReading onWall = probe.measure(glm::dvec3(0.5, 0.01, 0), {0, 0, 1}, b);
+    CHECK(onFloor.radiosity.value().x == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(onWall.radiosity.value().x == doctest::Approx(5.0).epsilon(1e-12));
+}
+
 TEST_CASE("a point off every surface or a normal into the surface is refused") {
     const Scene scene = parallelSquares(1.0);
     const PatchMesh mesh = meshScene(scene, meshing(0.05));
