@@ -219,7 +219,9 @@ TEST_CASE("element tree: memory grows linearly with the elements") {
 
 TEST_CASE("hierarchical: the furnace converges to E / (1 - rho)") {
     for (const SolverMethod method : kMethods)
-        for (const auto& [rho, size] : {std::pair{0.3, glm::dvec3(2, 0.5, 1)}, std::pair{0.5, glm::dvec3(1, 1, 1)}}) {
+        for (const auto& values : {std::pair{0.3, glm::dvec3(2, 0.5, 1)}, std::pair{0.5, glm::dvec3(1, 1, 1)}}) {
+            const double rho = values.first;  // not structured bindings: clang 14 cannot CAPTURE those
+            const glm::dvec3 size = values.second;
             {
                 CAPTURE(methodName(method));
                 CAPTURE(rho);

@@ -166,7 +166,8 @@ TEST_CASE("block shooters cover every patch once with blocks of one face whose o
 }
 
 TEST_CASE("block shooters' form factors match the box face-to-face closed forms") {
-    for (const auto& [w, h, d] : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
+    for (const auto& values : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
+        const double w = values[0], h = values[1], d = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         CAPTURE(w);
         const Scene box = closedBox(w, h, d, {"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
         const PatchMesh mesh = meshAt(box, (w * h + h * d + w * d) / 150);

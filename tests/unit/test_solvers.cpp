@@ -376,7 +376,8 @@ TEST_CASE("progressive shoots the patch with the most unshot power and keeps the
 // ---- With the real mesher and form-factor kernel --------------------------------------------
 
 TEST_CASE("the computed matrix sums to the face-to-face closed forms of a box") {
-    for (const auto& [w, h, d] : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
+    for (const auto& values : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
+        const double w = values[0], h = values[1], d = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         const Scene box = closedBox(w, h, d, 0, {"grey", Rgb(0.5), ExitanceRgb{}}, {"lamp", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
         const PatchMesh mesh = meshAt(box, w * h * d / 12);
         const RayCaster rays(box);
