@@ -70,7 +70,7 @@ SolverThread::SolverThread(SolverOptions options, SolverFactory factory)
         factory_ = [](SolverMethod method, const Scene& scene, const PatchMesh& mesh, const SolverOptions& o,
                       Progress* progress) { return makeSolver(method, scene, mesh, o, progress); };
     }
-    published_.store(std::make_shared<const Snapshot>());
+    published_ = std::make_shared<const Snapshot>();
     worker_ = std::jthread([this](std::stop_token stop) { workerLoop(stop); });
 }
 
@@ -81,25 +81,31 @@ SolverThread::~SolverThread() {
     // jthread joins here.
 }
 
-bool SolverThread::cancelsLongWork(const SolverCommand& command) {
-    return std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::Remesh>(command) ||
-           std::holds_alternative<command::LoadScene>(command);
+bool SolverThread::cancelsLongWork(const SolverCommand& command, SolverActivity activity) {
+    // A new method makes form factors pointless but not the mesh; a new mesh or scene makes both.
+    if (std::holds_alternative<command::SetMethod>(command)) return activity == SolverActivity::FormFactors;
+    if (std::holds_alternative<command::Remesh>(command) || std::holds_alternative<command::LoadScene>(command))
+        return activity == SolverActivity::Meshing || activity == SolverActivity::FormFactors;
+    return false;
 }
 
 void SolverThread::send(SolverCommand command) {
-    const bool cancel = cancelsLongWork(command);
+    const bool cancel = cancelsLongWork(command, activity());
     {
         std::lock_guard lock(queueMutex_);
         queue_.push_back(std::move(command));
     }
-    // The worker clears the request when it starts new long work, so a stale request can at worst
-    // make one build start over.
-    if (cancel && activity() != SolverActivity::Idle && activity() != SolverActivity::Solving)
-        progress_.cancelRequested.store(true);
+    // The worker clears the request when it starts new long work, so a late request can at worst
+    // cancel one build or meshing too many: a cancelled meshing re-queues itself (see apply), and a
+    // cancelled build is redone when the solver is next needed.
+    if (cancel) progress_.cancelRequested.store(true);
     queueChanged_.notify_all();
 }
 
-std::shared_ptr<const Snapshot> SolverThread::snapshot() const { return published_.load(); }
+std::shared_ptr<const Snapshot> SolverThread::snapshot() const {
+    std::lock_guard lock(publishedMutex_);
+    return published_;
+}
 
 void SolverThread::waitUntilIdle() {
     std::unique_lock lock(queueMutex_);
@@ -163,6 +169,14 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
     idle_.notify_all();
 }
 
+void SolverThread::requeueMeshingUnlessSuperseded(const MeshingOptions& meshing) {
+    std::lock_guard lock(queueMutex_);
+    for (const SolverCommand& queued : queue_)
+        if (std::holds_alternative<command::Remesh>(queued) || std::holds_alternative<command::LoadScene>(queued))
+            return;
+    queue_.push_front(command::Remesh{meshing});
+}
+
 void SolverThread::apply(State& state, SolverCommand& command) {
     std::visit(
         [&](auto& c) {
@@ -210,7 +224,22 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
                 activity_.store(SolverActivity::Meshing);
                 progress_.cancelRequested.store(false);
-                auto mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
+                std::shared_ptr<const PatchMesh> mesh;
+                try {
+                    mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
+                } catch (const Cancelled&) {
+                    // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
+                    // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.
+                    state.scene = std::move(scene);
+                    state.mesh.reset();
+                    state.solver.reset();
+                    ++state.meshGeneration;
+                    state.running = false;
+                    state.pendingSteps = 0;
+                    state.history.clear();
+                    requeueMeshingUnlessSuperseded(c.meshing);
+                    throw;
+                }
                 state.scene = std::move(scene);
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
@@ -258,7 +287,7 @@ void SolverThread::publish(State& state) {
                       std::to_string(b.y) + ", " + std::to_string(b.z) + " W/m^2); stopped: reset, or change the material or method";
         state.running = false;
         state.pendingSteps = 0;
-        const std::shared_ptr<const Snapshot> previous = published_.load();
+        const std::shared_ptr<const Snapshot> previous = snapshot();
         if (previous->mesh == s->mesh && firstNonFinite(previous->radiosity) == std::string::npos)
             s->radiosity = previous->radiosity;
         else
@@ -273,7 +302,12 @@ void SolverThread::publish(State& state) {
     s->notice = state.notice;
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
-    published_.store(std::shared_ptr<const Snapshot>(std::move(s)));
+    std::shared_ptr<const Snapshot> next(std::move(s));
+    {
+        std::lock_guard lock(publishedMutex_);
+        published_.swap(next);
+    }
+    // `next` now holds the previous snapshot and is released here, outside the lock.
     state.lastPublish = std::chrono::steady_clock::now();
 }
 

@@ -45,7 +45,8 @@ private:
     void apply(State& state, SolverCommand& command);
     void ensureSolver(State& state);
     void publish(State& state);
-    [[nodiscard]] static bool cancelsLongWork(const SolverCommand& command);
+    [[nodiscard]] static bool cancelsLongWork(const SolverCommand& command, SolverActivity activity);
+    void requeueMeshingUnlessSuperseded(const MeshingOptions& meshing);
 
     SolverOptions options_;
     SolverFactory factory_;
@@ -58,7 +59,11 @@ private:
     bool workerBusy_ = false;  ///< guarded by queueMutex_: applying a command or stepping
     std::condition_variable_any idle_;
 
-    std::atomic<std::shared_ptr<const Snapshot>> published_;
+    // The newest snapshot. The mutex guards only the pointer copy (nanoseconds), never the worker's
+    // work; libstdc++ 12's std::atomic<std::shared_ptr> would do the same with a lock bit that
+    // ThreadSanitizer cannot see.
+    mutable std::mutex publishedMutex_;
+    std::shared_ptr<const Snapshot> published_;
     std::jthread worker_;  // last: started after everything it uses exists
 };
 
