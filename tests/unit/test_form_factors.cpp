@@ -14,7 +14,11 @@
 
 #include "radiometry/formfactor/FormFactor.h"
 
+#include "tests/support/CatalogViewFactors.h"
+
 using namespace radiant;
+using radiant::test::parallelRectangles;
+using radiant::test::perpendicularRectangles;
 
 namespace {
 
@@ -43,24 +47,7 @@ PatchPolygon polygonFacing(std::initializer_list<glm::dvec3> corners, const glm:
     return polygon;
 }
 
-/// Howell: parallel, directly opposed rectangles a x b at distance c.
-double parallelRectangles(double a, double b, double c) {
-    const double X = a / c, Y = b / c;
-    const double X2 = X * X, Y2 = Y * Y;
-    return 2 / (pi * X * Y) *
-           (std::log(std::sqrt((1 + X2) * (1 + Y2) / (1 + X2 + Y2))) + X * std::sqrt(1 + Y2) * std::atan(X / std::sqrt(1 + Y2)) +
-            Y * std::sqrt(1 + X2) * std::atan(Y / std::sqrt(1 + X2)) - X * std::atan(X) - Y * std::atan(Y));
-}
 
-/// Howell: perpendicular rectangles w x l (from) and h x l (to) sharing the edge of length l.
-double perpendicularRectangles(double w, double h, double l) {
-    const double W = w / l, H = h / l;
-    const double W2 = W * W, H2 = H * H, S = std::sqrt(H2 + W2);
-    const double logTerm = std::log((1 + W2) * (1 + H2) / (1 + W2 + H2)) +
-                           W2 * std::log(W2 * (1 + W2 + H2) / ((1 + W2) * (W2 + H2))) +
-                           H2 * std::log(H2 * (1 + W2 + H2) / ((1 + H2) * (W2 + H2)));
-    return 1 / (pi * W) * (W * std::atan(1 / W) + H * std::atan(1 / H) - S * std::atan(1 / S) + 0.25 * logTerm);
-}
 
 /// Howell: differential area to a parallel rectangle a x b with a corner on its normal at distance c.
 double cornerRectangle(double a, double b, double c) {

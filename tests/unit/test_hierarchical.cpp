@@ -3,6 +3,8 @@
 // values are computed here from the formulas, never taken from the solver.
 #include <doctest/doctest.h>
 
+#include "tests/support/CatalogViewFactors.h"
+
 #include <algorithm>
 #include <cmath>
 #include <memory>
@@ -120,14 +122,6 @@ PatchMesh gridPatches(const Scene& scene, int n) {
     return mesh;
 }
 
-/// Parallel directly opposed rectangles (Howell's catalog), as printed in oracles.md.
-double parallelRectanglesF(double a, double b, double c) {
-    const double X = a / c, Y = b / c;
-    const double x1 = 1 + X * X, y1 = 1 + Y * Y;
-    return 2 / (std::numbers::pi * X * Y) *
-           (std::log(std::sqrt(x1 * y1 / (x1 + Y * Y))) + X * std::sqrt(y1) * std::atan(X / std::sqrt(y1)) +
-            Y * std::sqrt(x1) * std::atan(Y / std::sqrt(x1)) - X * std::atan(X) - Y * std::atan(Y));
-}
 
 /// Steps until the residual falls below `tolerance` (or `maxSteps`); returns the steps taken.
 std::size_t solve(Solver& solver, double tolerance = 1e-7, std::size_t maxSteps = 300) {
@@ -252,7 +246,7 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
         double a, b, c;
     };
     for (const Case g : {Case{1, 1, 1}, Case{1, 1.5, 0.5}, Case{2, 1, 1.5}}) {
-        const double F = parallelRectanglesF(g.a, g.b, g.c);  // equal areas: F12 = F21
+        const double F = radiant::test::parallelRectangles(g.a, g.b, g.c);  // equal areas: F12 = F21
         SUBCASE("a black emitter: the receiver's mean is exactly E2 + rho2 F E1") {
             const double E1 = 1, E2 = 0.25, rho2 = 0.6;
             const Scene scene = makePlates(g.a, g.b, g.c, grey("emitter", 0, E1), grey("receiver", rho2, E2));
@@ -333,7 +327,7 @@ TEST_CASE("hierarchical: links refine more near the light than far from it") {
 
 TEST_CASE("hierarchical: setMaterial keeps the links and resumes to the fresh answer") {
     const double a = 1, b = 1, c = 1;
-    const double F = parallelRectanglesF(a, b, c);
+    const double F = radiant::test::parallelRectangles(a, b, c);
     const Scene before = makePlates(a, b, c, grey("emitter", 0, 1), grey("receiver", 0.3, 0));
     const Scene after = makePlates(a, b, c, grey("emitter", 0, 2), grey("receiver", 0.7, 0));
     const glm::dvec3 eye{0.5, 0.5, 0.1}, target{0.5, 0.5, 1};

@@ -22,31 +22,16 @@
 #include "radiometry/solver/ProgressiveSolver.h"
 #include "radiometry/solver/SolverFactories.h"
 
+#include "tests/support/CatalogViewFactors.h"
+
 using namespace radiant;
+using radiant::test::parallelRectangles;
+using radiant::test::perpendicularRectangles;
 
 namespace {
 
-constexpr double pi = std::numbers::pi;
 
-/// Directly opposed parallel rectangles a x b at distance c (Howell; oracles.md).
-double parallelRectangles(double a, double b, double c) {
-    const double x = a / c, y = b / c;
-    const double x2 = x * x, y2 = y * y;
-    return 2.0 / (pi * x * y) *
-           (std::log(std::sqrt((1 + x2) * (1 + y2) / (1 + x2 + y2))) + x * std::sqrt(1 + y2) * std::atan(x / std::sqrt(1 + y2)) +
-            y * std::sqrt(1 + x2) * std::atan(y / std::sqrt(1 + x2)) - x * std::atan(x) - y * std::atan(y));
-}
 
-/// Perpendicular rectangles w x l and h x l sharing the edge l: F from the w x l one (oracles.md).
-double perpendicularRectangles(double w, double h, double l) {
-    const double H = h / l, W = w / l;
-    const double H2 = H * H, W2 = W * W, sum = 1 + W2 + H2;
-    const double logTerm = std::log((1 + W2) * (1 + H2) / sum * std::pow(W2 * sum / ((1 + W2) * (W2 + H2)), W2) *
-                                    std::pow(H2 * sum / ((1 + H2) * (W2 + H2)), H2));
-    return 1.0 / (pi * W) *
-           (W * std::atan(1 / W) + H * std::atan(1 / H) - std::sqrt(H2 + W2) * std::atan(1 / std::sqrt(H2 + W2)) +
-            0.25 * logTerm);
-}
 
 Face faceFacing(std::vector<glm::dvec3> corners, const glm::dvec3& inside) {
     Face face;
