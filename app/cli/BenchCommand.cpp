@@ -1,6 +1,7 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <string>
 
 #include "app/bench/BenchTable.h"
 #include "app/cli/CommandLine.h"
@@ -11,14 +12,18 @@ Subcommand addBenchCommand(CLI::App& root) {
     auto options = std::make_shared<BenchOptions>();
     CLI::App* sub = root.add_subcommand("bench", "Measure loading, form factors and solvers; print tables");
     sub->add_flag("--quick", options->quick, "Fewer sizes and repeats (a smoke run, not figures to quote)");
-    return {sub, [options] {
+    auto only = std::make_shared<std::string>();
+    sub->add_option("--only", *only, "Run one table: scenes, form-factors, solvers, hemicube or frames")
+        ->check(CLI::IsMember({"scenes", "form-factors", "solvers", "hemicube", "frames"}));
+    return {sub, [options, only] {
+                const auto wanted = [&](const char* table) { return only->empty() || *only == table; };
                 std::printf("# radiant bench%s\n", options->quick ? " --quick" : "");
                 std::printf("Medians over repeats in one run; the machine may be shared and noisy.\n");
-                benchScenes(*options).print();
-                benchFormFactors(*options).print();
-                benchSolvers(*options).print();
-                benchHemicube(*options).print();
-                benchFrames(*options).print();
+                if (wanted("scenes")) benchScenes(*options).print();
+                if (wanted("form-factors")) benchFormFactors(*options).print();
+                if (wanted("solvers")) benchSolvers(*options).print();
+                if (wanted("hemicube")) benchHemicube(*options).print();
+                if (wanted("frames")) benchFrames(*options).print();
                 return 0;
             }};
 }
