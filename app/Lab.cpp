@@ -36,6 +36,7 @@
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
+#include "render/overlay/DepthVisibility.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -141,6 +142,7 @@ struct Lab::State {
         case GLFW_KEY_N:
         case GLFW_KEY_RIGHT: live.send(command::Step{1}); break;
         case GLFW_KEY_R: live.send(command::Reset{}); break;
+        case GLFW_KEY_K: DisplayPanel::rekey(display); break;
         case GLFW_KEY_F:
             display.colourMode = display.colourMode == render::ColourMode::FalseColour ? render::ColourMode::ToneMapped
                                                                                       : render::ColourMode::FalseColour;
@@ -164,6 +166,8 @@ struct Lab::State {
             materialsShown = s.scene;
         }
         patches->setRadiosity(s.radiosity, s.generation, s.stats.shooter);
+        patches->setLinks(s.linkSegments);
+        patches->setImportance(s.importance);
         if (s.scene->name != sceneShown) {
             if (!sceneShown.empty()) orbit = homeCamera(*s.scene);
             sceneShown = s.scene->name;
@@ -196,11 +200,13 @@ struct Lab::State {
         return line;
     }
 
-    void drawProbeMarker() const {
+    void drawProbeMarker(int framebufferHeight) const {
         const std::optional<ProbePick>& pick = probePanel->picked();
         if (!pick) return;
         const glm::dvec3 p = render::projectToPixel(lastCamera, viewport, pick->point);
         if (p.z <= 0 || p.z >= 1) return;
+        // Behind a block, the picked point is not there to see.
+        if (!render::visibleInDepthBuffer(lastCamera, viewport, framebufferHeight, pick->point)) return;
         const float ratio = window.pixelRatio();
         const ImVec2 centre{static_cast<float>(p.x) / ratio, static_cast<float>(p.y) / ratio};
         const float r = ImGui::GetFontSize() * 0.45f;
@@ -245,11 +251,11 @@ struct Lab::State {
         if (const std::optional<glm::dvec2> click = controller.click())
             pickAt(*click * static_cast<double>(pixelRatio));
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
-        drawProbeMarker();
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
         patches->draw(lastCamera, viewport.aspect());
+        drawProbeMarker(height);  // before other overlays: only the scene hides it
         render::useWholeWindow(width, height);
         ui->render();
         if (capture || screenshotRequested) {
