@@ -15,10 +15,25 @@ enum class ColourMode {
                   ///< scene as built, to compare with what light makes of it
 };
 
+/// Which radiosity exposure 0 shows as a middle tone.
+enum class ExposureKey {
+    /// Fixed by the emitters and materials alone: the mean radiosity the reflectors reach once all
+    /// the emitted power is absorbed (energy balance of a closed, well-mixed enclosure). The image
+    /// starts dark and brightens as the solve spreads light, ending about right.
+    EnergyBalance,
+    /// The automatic key of the solution shown when it was re-keyed (button, key K), then fixed.
+    Held,
+    /// The mean radiosity of the lit reflectors, every frame: always well exposed, but a solve in
+    /// progress hardly seems to brighten.
+    Automatic,
+};
+
 struct DisplaySettings {
-    /// Exposure in stops relative to the automatic key (the mean radiosity of the lit, non-emitting
-    /// patches shown as a middle tone); +1 doubles the light.
+    /// Exposure in stops relative to the key (see ExposureKey); +1 doubles the light.
     float exposureStops = 0.0f;
+    ExposureKey exposureKey = ExposureKey::EnergyBalance;
+    /// Bumped to re-key: the renderer then holds the automatic key of the solution it shows.
+    unsigned rekeyCount = 0;
     Shading shading = Shading::Smooth;
     ColourMode colourMode = ColourMode::ToneMapped;
     /// False colour on a log10 scale spanning kLogDecades decades below the maximum.

@@ -62,7 +62,7 @@ glm::vec4 addTint(const glm::vec4& a, const glm::vec4& b) {
 
 /// Everything the colours on the GPU depend on besides the data: when it changes, they are redone.
 struct ColourInputs {
-    float exposureStops = 0;
+    double exposureScale = 0;
     ColourMode mode = ColourMode::ToneMapped;
     bool logScale = false;
     float falseColourMaxW_m2 = 0;
@@ -72,9 +72,9 @@ struct ColourInputs {
     bool operator==(const ColourInputs&) const = default;
 };
 
-ColourInputs colourInputs(const DisplaySettings& d) {
-    return {d.exposureStops, d.colourMode,     d.logScale,
-            d.falseColourMaxW_m2, d.highlightShooter, d.showImportance, d.shading};
+ColourInputs colourInputs(const DisplaySettings& d, double exposureScale) {
+    return {exposureScale,        d.colourMode,       d.logScale,      d.falseColourMaxW_m2,
+            d.highlightShooter, d.showImportance, d.shading};
 }
 
 /// The fragment shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges).
@@ -97,6 +97,7 @@ struct PatchRenderer::State {
     gl::Buffer colours;  // DisplayVertex per drawn vertex, rewritten when the colours change
     std::vector<std::uint32_t> drawnPatch;      // per drawn vertex
     std::vector<std::uint32_t> drawnSmoothing;  // per drawn vertex
+    std::vector<GLint> patchFirstVertex;        // per patch and one past the last: its drawn vertices
     gl::Buffer links;
     gl::VertexArray linkLayout;
     GLsizei linkVertexCount = 0;
@@ -119,11 +120,16 @@ struct PatchRenderer::State {
     std::vector<char> patchEmits;
     std::vector<glm::vec3> baseColour;  // linear: reflectance, or an emitter's chromaticity
     std::vector<double> importance;     // relative to its maximum
+    std::shared_ptr<const std::vector<double>> importanceShown;
+    std::shared_ptr<const std::vector<glm::vec3>> linksShown;
     std::size_t smoothingVertexCount = 0;
     std::vector<Rgb> radiosity;         // per patch, W/m^2
     std::vector<Rgb> smoothRadiosity;   // per smoothing vertex, W/m^2
     std::vector<char> changed;          // per patch: changed in the last update
-    double keyW_m2 = 1.0;
+    double automaticKeyW_m2 = 1.0;      // mean luminance of the lit reflectors now
+    double energyBalanceKeyW_m2 = 0.0;  // from the materials; 0 when nothing emits
+    double heldKeyW_m2 = 0.0;           // 0 until re-keyed
+    unsigned rekeysSeen = 0;
     double dataMaxW_m2 = 1.0;  // 99th area percentile of the non-emitters' total radiosity, rounded up
 
     const gl::ShaderProgram& program(unsigned variant) {
@@ -166,8 +172,10 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     triangles.reserve(n * 6);
     s.drawnPatch.clear();
     s.drawnSmoothing.clear();
+    s.patchFirstVertex.assign(n + 1, 0);
     for (std::size_t p = 0; p < n; ++p) {
         const Patch& patch = mesh.patches[p];
+        s.patchFirstVertex[p] = static_cast<GLint>(triangles.size());
         s.patchSurface[p] = patch.surface;
         s.patchArea[p] = patch.area;
         s.patchCorners[p] = patch.cornerCount;
@@ -194,6 +202,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
             corner(static_cast<std::uint8_t>(i + 1), {0, diagonalY, 1});
         }
     }
+    s.patchFirstVertex[n] = static_cast<GLint>(triangles.size());
     s.smoothingVertexCount = smoothingIds.size();
     s.vertices.setData(std::span<const PatchVertex>(triangles));
     s.vertexCount = static_cast<GLsizei>(triangles.size());
@@ -209,7 +218,10 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.smoothRadiosity.clear();
     s.changed.assign(n, 0);
     s.importance.assign(n, 0.0);
-    s.keyW_m2 = 1.0;
+    s.importanceShown.reset();
+    s.linksShown.reset();
+    s.automaticKeyW_m2 = 1.0;
+    s.heldKeyW_m2 = 0.0;
     s.dataMaxW_m2 = 1.0;
     s.linkVertexCount = 0;
     setMaterials(scene);
@@ -219,6 +231,12 @@ void PatchRenderer::setMaterials(const Scene& scene) {
     State& s = *state_;
     s.patchEmits.resize(s.patchSurface.size());
     s.baseColour.resize(s.patchSurface.size());
+    // Energy balance of a closed enclosure: at convergence all emitted power P is absorbed,
+    // P = sum A (1 - rho) H, so the mean irradiance is H = P / sum A (1 - rho) per band, and a
+    // patch's radiosity E + rho H. The key is the area mean over the reflectors (over every patch
+    // when all emit, as in the furnace, where it is exactly E / (1 - rho)).
+    Rgb emitted(0.0), absorbing(0.0), reflectorSum(0.0), emitterSum(0.0);
+    double reflectorArea = 0, emitterArea = 0;
     for (std::size_t p = 0; p < s.patchSurface.size(); ++p) {
         const std::size_t surface = s.patchSurface[p];
         if (surface >= scene.surfaces.size())
@@ -228,7 +246,21 @@ void PatchRenderer::setMaterials(const Scene& scene) {
         const Material& material = scene.materials.at(scene.surfaces[surface].material);
         s.patchEmits[p] = material.emits() ? 1 : 0;
         s.baseColour[p] = displayColour(material);
+        const double area = s.patchArea[p];
+        emitted += area * material.exitance.value();
+        absorbing += area * (Rgb(1.0) - material.reflectance);
     }
+    const Rgb meanIrradiance = glm::max(absorbing, Rgb(1e-12));
+    for (std::size_t p = 0; p < s.patchSurface.size(); ++p) {
+        const Material& material = scene.materials.at(scene.surfaces[s.patchSurface[p]].material);
+        const Rgb radiosity = material.exitance.value() + material.reflectance * (emitted / meanIrradiance);
+        (s.patchEmits[p] ? emitterSum : reflectorSum) += s.patchArea[p] * radiosity;
+        (s.patchEmits[p] ? emitterArea : reflectorArea) += s.patchArea[p];
+    }
+    const Rgb meanRadiosity = reflectorArea > 0 ? reflectorSum / reflectorArea
+                              : emitterArea > 0 ? emitterSum / emitterArea
+                                                : Rgb(0.0);
+    s.energyBalanceKeyW_m2 = luminance(emitted) > 0 ? luminance(meanRadiosity) : 0.0;
     s.coloursDirty = true;
 }
 
@@ -289,7 +321,7 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
         s.smoothRadiosity[v] = smoothSums[v].w > 0 ? glm::dvec3(smoothSums[v]) / smoothSums[v].w : Rgb(0.0);
 
     // Before light has bounced, only the emitters are lit: key and range follow them then.
-    s.keyW_m2 = litArea > 0 ? litLuminance / litArea : std::max(maxTotalAll / 3.0, 1e-30);
+    s.automaticKeyW_m2 = litArea > 0 ? litLuminance / litArea : std::max(maxTotalAll / 3.0, 1e-30);
     // The automatic false-colour range ends at the 99th area percentile of the reflectors: a few
     // hot patches (beside an emitter, in a corner) would otherwise squash everything else into
     // the bottom of the colour map. Brighter patches show the top colour.
@@ -308,22 +340,35 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
     ++s.uploads;
 }
 
-void PatchRenderer::setImportance(std::span<const double> importance) {
+void PatchRenderer::setImportance(std::shared_ptr<const std::vector<double>> importance) {
     State& s = *state_;
-    const double largest = importance.empty() ? 0.0 : *std::max_element(importance.begin(), importance.end());
+    if (importance == s.importanceShown) return;
+    s.importanceShown = importance;
+    const std::vector<double> none;
+    const std::vector<double>& values = importance ? *importance : none;
+    const double largest = values.empty() ? 0.0 : *std::max_element(values.begin(), values.end());
     for (std::size_t p = 0; p < s.importance.size(); ++p)
-        s.importance[p] = p < importance.size() && largest > 0 ? importance[p] / largest : 0.0;
-    s.coloursDirty = true;
+        s.importance[p] = p < values.size() && largest > 0 ? values[p] / largest : 0.0;
+    if (s.settings.showImportance) s.coloursDirty = true;
 }
 
-void PatchRenderer::setLinks(std::span<const glm::vec3> segmentEnds) {
+void PatchRenderer::setLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds) {
     State& s = *state_;
-    s.links.setData(segmentEnds, GL_DYNAMIC_DRAW);
+    if (segmentEnds == s.linksShown) return;
+    s.linksShown = segmentEnds;
+    const std::span<const glm::vec3> ends = segmentEnds ? std::span<const glm::vec3>(*segmentEnds) : std::span<const glm::vec3>();
+    s.links.setData(ends, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
-    s.linkVertexCount = static_cast<GLsizei>(segmentEnds.size() & ~std::size_t{1});
+    s.linkVertexCount = static_cast<GLsizei>(ends.size() & ~std::size_t{1});
 }
 
-void PatchRenderer::setSettings(const DisplaySettings& settings) { state_->settings = settings; }
+void PatchRenderer::setSettings(const DisplaySettings& settings) {
+    State& s = *state_;
+    s.settings = settings;
+    const bool heldButUnset = settings.exposureKey == ExposureKey::Held && s.heldKeyW_m2 <= 0;
+    if (settings.rekeyCount != s.rekeysSeen || heldButUnset) s.heldKeyW_m2 = s.automaticKeyW_m2;
+    s.rekeysSeen = settings.rekeyCount;
+}
 const DisplaySettings& PatchRenderer::settings() const { return state_->settings; }
 
 ColourLegend PatchRenderer::legend() const {
@@ -332,10 +377,24 @@ ColourLegend PatchRenderer::legend() const {
     return makeLegend(top, d.logScale, DisplaySettings::kLogDecades);
 }
 
-double PatchRenderer::exposureKeyW_m2() const { return state_->keyW_m2; }
+double PatchRenderer::exposureKeyW_m2() const {
+    const State& s = *state_;
+    switch (s.settings.exposureKey) {
+    case ExposureKey::EnergyBalance:
+        if (s.energyBalanceKeyW_m2 > 0) return s.energyBalanceKeyW_m2;
+        break;  // nothing emits: no balance to key on
+    case ExposureKey::Held:
+        if (s.heldKeyW_m2 > 0) return s.heldKeyW_m2;
+        break;
+    case ExposureKey::Automatic: break;
+    }
+    return s.automaticKeyW_m2;
+}
+
+double PatchRenderer::automaticExposureKeyW_m2() const { return state_->automaticKeyW_m2; }
 
 double PatchRenderer::exposureScale() const {
-    return std::exp2(static_cast<double>(state_->settings.exposureStops)) * kKeyTone / state_->keyW_m2;
+    return std::exp2(static_cast<double>(state_->settings.exposureStops)) * kKeyTone / exposureKeyW_m2();
 }
 
 std::size_t PatchRenderer::patchCount() const { return state_->patchSurface.size(); }
@@ -344,10 +403,10 @@ std::uint64_t PatchRenderer::radiosityUploads() const { return state_->uploads; 
 
 void PatchRenderer::refreshColours() const {
     State& s = *state_;
-    const ColourInputs inputs = colourInputs(s.settings);
+    const double scale = exposureScale();
+    const ColourInputs inputs = colourInputs(s.settings, scale);
     if (!s.coloursDirty && inputs == s.coloursMadeWith) return;
     const std::size_t n = s.patchSurface.size();
-    const double scale = exposureScale();
     const ColourLegend range = legend();
     const auto colourOf = [&](const Rgb& b) {
         return glm::vec4(glm::vec3(toneMap(b, scale)), static_cast<float>(range.position(total(b))));
@@ -395,40 +454,53 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     const DisplaySettings& d = s.settings;
     const glm::mat4 viewProjection(camera.viewProjection(aspect));
     const bool falseColour = d.colourMode == ColourMode::FalseColour && s.hasRadiosity;
-    const bool outline = d.highlightShooter && s.hasRadiosity && s.shooter >= 0;
-    const unsigned variant = (falseColour ? 1u : 0u) | (falseColour && d.isolines ? 2u : 0u) |
-                             (d.wireframe || outline ? 4u : 0u);
+    const bool outline = d.highlightShooter && s.hasRadiosity && s.shooter >= 0 &&
+                         static_cast<std::size_t>(s.shooter) < s.patchSurface.size();
+    const unsigned colourVariant = (falseColour ? 1u : 0u) | (falseColour && d.isolines ? 2u : 0u);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDisable(GL_CULL_FACE);  // walls are seen from inside, blocks from outside: both sides are real
     glDisable(GL_BLEND);
-    const gl::ShaderProgram& p = s.program(variant);
-    p.use();
-    p.set("viewProjection", viewProjection);
-    p.set("eye", glm::vec3(camera.eye));
     const glm::dvec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
     const glm::dvec3 up = glm::cross(right, camera.forward);
-    p.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
-    p.set("hasRadiosity", s.hasRadiosity ? 1 : 0);
-    p.set("wireframe", d.wireframe ? 1 : 0);
-    // Isolines where the value crosses a tick: linear legends tick every `step` W/m^2 from the
-    // minimum, log legends at each power of ten.
     const ColourLegend range = legend();
-    if (range.logScale) {
-        const double lo = std::log10(range.minW_m2), hi = std::log10(range.maxW_m2);
-        p.set("isolineScale", static_cast<float>(hi - lo));
-        p.set("isolineOffset", static_cast<float>(lo));
-    } else {
-        const double step = range.ticksW_m2.size() >= 2 ? range.ticksW_m2[1] - range.ticksW_m2[0] : range.maxW_m2;
-        p.set("isolineScale", static_cast<float>((range.maxW_m2 - range.minW_m2) / step));
-        p.set("isolineOffset", static_cast<float>(range.minW_m2 / step));
-    }
+    const auto useProgram = [&](unsigned variant) {
+        const gl::ShaderProgram& p = s.program(variant);
+        p.use();
+        p.set("viewProjection", viewProjection);
+        p.set("eye", glm::vec3(camera.eye));
+        p.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
+        p.set("hasRadiosity", s.hasRadiosity ? 1 : 0);
+        p.set("wireframe", d.wireframe ? 1 : 0);
+        // Isolines where the value crosses a tick: linear legends tick every `step` W/m^2 from the
+        // minimum, log legends at each power of ten.
+        if (range.logScale) {
+            const double lo = std::log10(range.minW_m2), hi = std::log10(range.maxW_m2);
+            p.set("isolineScale", static_cast<float>(hi - lo));
+            p.set("isolineOffset", static_cast<float>(lo));
+        } else {
+            const double step = range.ticksW_m2.size() >= 2 ? range.ticksW_m2[1] - range.ticksW_m2[0] : range.maxW_m2;
+            p.set("isolineScale", static_cast<float>((range.maxW_m2 - range.minW_m2) / step));
+            p.set("isolineOffset", static_cast<float>(range.minW_m2 / step));
+        }
+    };
+    // Edges cost a derivative per pixel (a third of the frame on llvmpipe): the whole view pays for
+    // them only with the wireframe; the shooter's outline redraws just its patch on top.
+    useProgram(colourVariant | (d.wireframe ? 4u : 0u));
     // Pushed back by their depth slope so overlays drawn at the same depth stay on top.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
     s.layout.bind();
     glDrawArrays(GL_TRIANGLES, 0, s.vertexCount);
+    if (outline && !d.wireframe) {
+        useProgram(colourVariant | 4u);
+        glDepthFunc(GL_LEQUAL);  // the same triangles at the same depth
+        const auto shooter = static_cast<std::size_t>(s.shooter);
+        glDrawArrays(GL_TRIANGLES, s.patchFirstVertex[shooter],
+                     s.patchFirstVertex[shooter + 1] - s.patchFirstVertex[shooter]);
+        glDepthFunc(GL_LESS);
+    }
     glDisable(GL_POLYGON_OFFSET_FILL);
 
     if (d.showLinks && s.linkVertexCount > 0) {

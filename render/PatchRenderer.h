@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 #include <memory>
 #include <span>
+#include <vector>
 
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
@@ -40,10 +41,12 @@ public:
     /// RadiantError); uploaded only when `generation` differs from the last call's. An empty span
     /// means "no solution yet". `shooter` is the patch shot in the last step, or -1.
     void setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_t generation, std::int64_t shooter = -1);
-    /// Per-patch importance (any non-negative scale; shown relative to its maximum). Empty clears it.
-    void setImportance(std::span<const double> importance);
-    /// Line segments (pairs of ends, metres) drawn when settings().showLinks. Empty clears them.
-    void setLinks(std::span<const glm::vec3> segmentEnds);
+    /// Per-patch importance (any non-negative scale; shown relative to its maximum) for the
+    /// importance tint. Null clears it; the pointer of the last call costs nothing.
+    void setImportance(std::shared_ptr<const std::vector<double>> importance);
+    /// Line segments (pairs of ends, metres) drawn when settings().showLinks: the hierarchical
+    /// links. Null clears them; uploaded only when the pointer differs from the last call's.
+    void setLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds);
 
     void setSettings(const DisplaySettings& settings);
     [[nodiscard]] const DisplaySettings& settings() const;
@@ -52,9 +55,11 @@ public:
 
     /// The range false colour maps with the current settings and data (for the legend).
     [[nodiscard]] ColourLegend legend() const;
-    /// Radiosity (W/m^2) the tone map's exposure 0 shows as a middle tone: the area-weighted mean
-    /// luminance of the lit non-emitting patches (1 before any solution).
+    /// Radiosity (W/m^2) the tone map's exposure 0 shows as a middle tone, as settings().exposureKey
+    /// asks (the automatic key where that mode has nothing to key on: no emitters, never re-keyed).
     [[nodiscard]] double exposureKeyW_m2() const;
+    /// The area-weighted mean luminance of the lit non-emitting patches now (1 before any solution).
+    [[nodiscard]] double automaticExposureKeyW_m2() const;
     /// Multiplier applied to radiosity before the tone curve: 2^stops * 0.35 / exposureKeyW_m2().
     [[nodiscard]] double exposureScale() const;
 

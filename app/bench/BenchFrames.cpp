@@ -45,6 +45,21 @@ double areaForPatchCount(const Scene& scene, std::size_t target) {
     return area;
 }
 
+/// Where a frame's time goes, in seconds: taking the snapshot and handing it to the renderer; the
+/// panels' ImGui frame; the 3D view's draw call (CPU-side: colours, uploads, llvmpipe's vertex
+/// stage); ImGui's draw and the swap (llvmpipe rasterises and shades when the frame is flushed).
+struct FramePhases {
+    std::vector<double> stream, panels, scene, present;
+};
+
+using Clock = std::chrono::steady_clock;
+double since(Clock::time_point& mark) {
+    const Clock::time_point now = Clock::now();
+    const double seconds = std::chrono::duration<double>(now - mark).count();
+    mark = now;
+    return seconds;
+}
+
 /// A minimal lab: the patch renderer fed from the solver thread's snapshots, and the sidebar's
 /// Display panel, drawn every frame as the lab does.
 class FrameLoop {
@@ -54,13 +69,13 @@ public:
           panel_(settings_, [this] { return renderer_.legend(); }) {}
 
     /// Draws `count` frames; returns each frame's wall time in seconds (end of one swap to the next).
-    std::vector<double> run(int count, std::size_t* uploads = nullptr) {
+    std::vector<double> run(int count, std::size_t* uploads = nullptr, FramePhases* phases = nullptr) {
         std::vector<double> seconds;
         const std::uint64_t uploadsBefore = renderer_.radiosityUploads();
-        auto last = std::chrono::steady_clock::now();
+        auto last = Clock::now();
         for (int i = 0; i < count; ++i) {
-            frame();
-            const auto now = std::chrono::steady_clock::now();
+            frame(phases);
+            const auto now = Clock::now();
             seconds.push_back(std::chrono::duration<double>(now - last).count());
             last = now;
         }
@@ -68,7 +83,12 @@ public:
         return seconds;
     }
 
-    void frame() {
+    void frame(FramePhases* phases = nullptr) {
+        Clock::time_point mark = Clock::now();
+        const auto phase = [&](std::vector<double> FramePhases::*which) {
+            const double seconds = since(mark);
+            if (phases) (phases->*which).push_back(seconds);
+        };
         glfwPollEvents();
         const std::shared_ptr<const Snapshot> snapshot = solver_.snapshot();
         if (snapshot->mesh && snapshot->scene) {
@@ -79,6 +99,7 @@ public:
                 haveCamera_ = true;
             }
         }
+        phase(&FramePhases::stream);
         ui_.newFrame();
         const float sidebar = 360.0f;
         ImGui::SetNextWindowPos(ImVec2(0, 0));
@@ -92,11 +113,14 @@ public:
         window_.framebufferSize(width, height);
         const int sidebarPixels = static_cast<int>(sidebar * window_.pixelRatio());
         const render::Viewport view{sidebarPixels, 0, std::max(1, width - sidebarPixels), std::max(1, height)};
+        phase(&FramePhases::panels);
         render::beginWindowFrame(width, height, view, kBackground);
         renderer_.draw(camera_, view.aspect());
+        phase(&FramePhases::scene);
         render::useWholeWindow(width, height);
         ui_.render();
         window_.swapBuffers();
+        phase(&FramePhases::present);
     }
 
     [[nodiscard]] std::string glRenderer() const { return render::queryGlInfo().renderer; }
@@ -119,7 +143,9 @@ std::string ms(double seconds) { return formatNumber(seconds * 1e3); }
 BenchTable benchFrames(const BenchOptions& options) {
     BenchTable table;
     table.title = "Frames: Cornell box at ~20k patches, 1600 x 1000 window, vsync off";
-    table.columns = {"solver", "frames", "median (ms)", "p99 (ms)", "radiosity uploads", "solver steps"};
+    table.columns = {"solver",       "frames",          "median (ms)",      "p99 (ms)",
+                     "stream (ms)",  "panels (ms)",     "3D draw (ms)",     "UI + swap (ms)",
+                     "radiosity uploads", "solver steps"};
     const char* display = std::getenv("DISPLAY");
     if (display == nullptr || *display == '\0') {
         table.notes.push_back("skipped: no display (run under xvfb-run -a -s \"-screen 0 1600x1000x24\")");
@@ -141,23 +167,31 @@ BenchTable benchFrames(const BenchOptions& options) {
     loop.run(frames / 10);  // warm-up: first uploads, shader compilation, font atlas
 
     std::size_t idleUploads = 0, runningUploads = 0;
+    FramePhases idlePhases, runningPhases;
     const std::size_t stepsBefore = solver.snapshot()->stats.iteration;
-    const std::vector<double> idle = loop.run(frames, &idleUploads);
+    const std::vector<double> idle = loop.run(frames, &idleUploads, &idlePhases);
     const std::size_t stepsIdle = solver.snapshot()->stats.iteration - stepsBefore;
     solver.send(command::Run{});
     std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the worker is stepping
     const std::size_t runningFrom = solver.snapshot()->stats.iteration;
-    const std::vector<double> running = loop.run(frames, &runningUploads);
+    const std::vector<double> running = loop.run(frames, &runningUploads, &runningPhases);
     const std::size_t stepsRunning = solver.snapshot()->stats.iteration - runningFrom;
     solver.send(command::Pause{});
     const std::size_t patches = solver.snapshot()->mesh ? solver.snapshot()->mesh->size() : 0;
 
-    table.rows.push_back({"idle", std::to_string(idle.size()), ms(median(idle)), ms(percentile(idle, 0.99)),
-                          std::to_string(idleUploads), std::to_string(stepsIdle)});
-    table.rows.push_back({"progressive running", std::to_string(running.size()), ms(median(running)),
-                          ms(percentile(running, 0.99)), std::to_string(runningUploads), std::to_string(stepsRunning)});
+    const auto row = [&](const char* label, const std::vector<double>& seconds, const FramePhases& phases,
+                         std::size_t uploads, std::size_t steps) {
+        table.rows.push_back({label, std::to_string(seconds.size()), ms(median(seconds)), ms(percentile(seconds, 0.99)),
+                              ms(median(phases.stream)), ms(median(phases.panels)), ms(median(phases.scene)),
+                              ms(median(phases.present)), std::to_string(uploads), std::to_string(steps)});
+    };
+    row("idle", idle, idlePhases, idleUploads, stepsIdle);
+    row("progressive running", running, runningPhases, runningUploads, stepsRunning);
     table.notes.push_back(std::to_string(patches) + " patches (max patch area " +
                           formatNumber(meshing.maxPatchArea * 1e4) + " cm^2); GL renderer: " + loop.glRenderer());
+    table.notes.push_back("phases are medians of each part of a frame: stream = snapshot to renderer, panels = "
+                          "ImGui frame, 3D draw = colours, uploads and llvmpipe's vertex stage, UI + swap = "
+                          "ImGui's draw and llvmpipe's rasterisation at the flush");
     table.notes.push_back("running / idle: median " + formatNumber(median(running) / median(idle)) + "x, p99 " +
                           formatNumber(percentile(running, 0.99) / percentile(idle, 0.99)) +
                           "x (target: running p99 < 33 ms and within 1.5x of idle)");

@@ -35,9 +35,27 @@ void DisplayPanel::draw() {
 
     ImGui::SetNextItemWidth(-labelRoom);
     ImGui::SliderFloat("Exposure", &s.exposureStops, -8.0f, 8.0f, "%+.1f stops");
-    help("Relative to the automatic key (the mean radiosity of lit, non-emitting patches).\n"
-         "Each stop doubles the light. Double-click to type; right-click resets.");
+    help("Relative to the key below. Each stop doubles the light.\n"
+         "Double-click to type; right-click resets.");
     if (ImGui::IsItemClicked(ImGuiMouseButton_Right)) s.exposureStops = 0.0f;
+
+    int key = static_cast<int>(s.exposureKey);
+    ImGui::TextUnformatted("Key");
+    ImGui::SameLine(labelRoom * 0.7f);
+    ImGui::RadioButton("emitters", &key, static_cast<int>(render::ExposureKey::EnergyBalance));
+    help("Fixed by the emitters: the mean radiosity the walls reach once all emitted power\n"
+         "is absorbed. The view starts dark and brightens as the solve spreads the light.");
+    ImGui::SameLine();
+    ImGui::RadioButton("held", &key, static_cast<int>(render::ExposureKey::Held));
+    help("Fixed at the solution shown when re-keyed (button or key K).");
+    ImGui::SameLine();
+    ImGui::RadioButton("auto", &key, static_cast<int>(render::ExposureKey::Automatic));
+    help("The mean radiosity of the lit walls, every frame: always well exposed, but the\n"
+         "solve hardly seems to brighten.");
+    s.exposureKey = static_cast<render::ExposureKey>(key);
+    ImGui::SameLine();
+    if (ImGui::SmallButton("Re-key")) rekey(s);
+    help("Hold the exposure of the solution shown now (key K).");
 
     int shading = s.shading == render::Shading::Smooth ? 0 : 1;
     ImGui::TextUnformatted("Shading");
@@ -101,6 +119,11 @@ void DisplayPanel::draw() {
     help("Larger text and spacing for a projector.");
     editingScale_ = ImGui::IsItemActive();
     if (ImGui::IsItemDeactivatedAfterEdit()) s.uiScale = scaleSlider_;
+}
+
+void DisplayPanel::rekey(render::DisplaySettings& settings) {
+    settings.exposureKey = render::ExposureKey::Held;
+    ++settings.rekeyCount;
 }
 
 void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {

@@ -1,5 +1,5 @@
 #pragma once
-// Display: how radiosity is shown - exposure, smooth/flat shading, false colour with its legend in
+// Display: how radiosity is shown - exposure and what it is keyed on, smooth/flat shading, false colour with its legend in
 // W/m^2 (linear or log, automatic or manual range, isolines), overlays (wireframe, last shooter,
 // hierarchical links, importance) and the UI scale for projectors. Edits a DisplaySettings the lab
 // owns and hands to the PatchRenderer each frame.
@@ -20,6 +20,8 @@ public:
 
     [[nodiscard]] const char* title() const override { return "Display"; }
     void draw() override;
+    /// Holds the exposure key of the solution shown now (the Re-key button and key K).
+    static void rekey(render::DisplaySettings& settings);
 
 private:
     void drawLegend(const render::ColourLegend& legend) const;

@@ -147,9 +147,13 @@ std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const R
             return message;
         }
     }
+    // Judged before sending: the snapshot is the one this frame shows.
+    const Snapshot& shown = live.snapshot();
+    const bool converged = !shown.running && !shown.history.empty() && shown.stats.residual < shown.tolerance;
     live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2)});
-    // The solve picks up from its current solution with the new material (no new form factors).
-    live.send(command::Run{});
+    // A running or converged solve re-solves live, from its current solution (no new form
+    // factors). A paused or stepped one stays as the teacher left it: the next step shows the edit.
+    if (shown.running || converged) live.send(command::Run{});
     return {};
 }
 

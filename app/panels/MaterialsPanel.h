@@ -23,8 +23,9 @@ public:
     /// Largest reflectance a band accepts: at 1 a closed scene never converges.
     static constexpr double kMaxReflectance = 0.999;
 
-    /// Checks a material edit and, when every band is in range, sends it (and Run, so the solve
-    /// resumes from its current solution). Returns why it was refused, empty when it was sent.
+    /// Checks a material edit and, when every band is in range, sends it, and Run when the solve
+    /// was running or had converged (it resumes from its current solution); a paused or stepped
+    /// solve stays paused. Returns why it was refused, empty when it was sent.
     /// The panel's fields and the lab's tests both go through here.
     static std::string submit(LiveSolve& live, std::size_t surface, const Rgb& reflectance, const Rgb& exitanceW_m2);
 

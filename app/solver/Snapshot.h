@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/solver/Solver.h"
@@ -39,6 +41,13 @@ struct Snapshot {
     /// started: a materials edit must leave it unchanged.
     std::uint64_t solverBuilds = 0;
     MeshingOptions meshing;                 ///< what `mesh` was made with
+    /// Hierarchical and importance methods: every link as a segment between the centroids of the
+    /// two elements it joins (pairs of ends, m). Shared by successive snapshots while the links
+    /// stay the same (refinement is what changes them); null for the other methods.
+    std::shared_ptr<const std::vector<glm::vec3>> linkSegments;
+    /// Importance method: per-patch importance Y (1/m^2), indexed like the mesh's patches; null
+    /// for the other methods.
+    std::shared_ptr<const std::vector<double>> importance;
 };
 
 } // namespace radiant::app

@@ -1,11 +1,18 @@
 #include "app/solver/SolverThread.h"
 
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
+
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <optional>
 #include <type_traits>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/solver/HierarchicalSolver.h"
+#include "radiometry/solver/ImportanceSolver.h"
 
 namespace radiant::app {
 
@@ -40,6 +47,12 @@ struct SolverThread::State {
     std::string error;
     std::string notice;
     std::chrono::steady_clock::time_point lastPublish{};
+    /// The link segments last published and what they were made from: rebuilt only when the
+    /// solver, its link count or (through a command) its links may have changed.
+    std::shared_ptr<const std::vector<glm::vec3>> linkSegments;
+    const Solver* linkSolver = nullptr;
+    std::size_t linkCount = 0;
+    bool linksStale = true;
 };
 
 namespace {
@@ -54,6 +67,31 @@ std::vector<Rgb> emittedRadiosity(const Scene& scene, const PatchMesh& mesh) {
         b[i] = scene.materials[surface.material].exitance.value();
     }
     return b;
+}
+
+/// Each link as a segment from its receiver's centroid to its source's.
+std::shared_ptr<const std::vector<glm::vec3>> linkSegments(const HierarchicalSolver& solver) {
+    auto segments = std::make_shared<std::vector<glm::vec3>>();
+    const ElementTree& tree = solver.elements();
+    segments->reserve(solver.links().size() * 2);
+    for (const Link& link : solver.links()) {
+        segments->push_back(glm::vec3(tree.polygon(link.receiver).centroid));
+        segments->push_back(glm::vec3(tree.polygon(link.source).centroid));
+    }
+    return segments;
+}
+
+/// On two cores the solver (its thread and the shared worker pool's helpers, which it starts and
+/// which inherit this) would take both from the thread that draws the window: under contention
+/// Linux gives a thread of nice +10 about a tenth of the CPU time a nice 0 thread gets, and with
+/// the window idle the solver still has every core. Linux's nice is per thread.
+void yieldToTheDisplay() {
+    const auto thread = static_cast<id_t>(syscall(SYS_gettid));
+    if (const char* nice = std::getenv("RADIANT_SOLVER_NICE")) {
+        setpriority(PRIO_PROCESS, thread, std::atoi(nice));
+        return;
+    }
+    setpriority(PRIO_PROCESS, thread, 10);
 }
 
 /// Index of the first patch whose radiosity is NaN or infinite, or npos.
@@ -113,6 +151,7 @@ void SolverThread::waitUntilIdle() {
 }
 
 void SolverThread::workerLoop(const std::stop_token& stop) {
+    yieldToTheDisplay();
     State state;
     while (!stop.stop_requested()) {
         std::optional<SolverCommand> next;
@@ -135,6 +174,7 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
         try {
             if (next) {
                 state.error.clear();
+                state.linksStale = true;
                 apply(state, *next);
                 publish(state);
                 continue;
@@ -265,8 +305,28 @@ void SolverThread::ensureSolver(State& state) {
     state.solverScene = state.scene;
     state.solverMesh = state.mesh;
     ++state.solverBuilds;
+    state.linksStale = true;
     state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options_, &progress_);
     activity_.store(SolverActivity::Idle);
+}
+
+void SolverThread::publishOverlays(State& state, Snapshot& s) {
+    const auto* hierarchical = dynamic_cast<const HierarchicalSolver*>(state.solver.get());
+    if (!hierarchical) {
+        state.linkSegments.reset();
+        state.linkSolver = nullptr;
+        return;
+    }
+    if (state.linksStale || state.linkSolver != hierarchical || state.linkCount != hierarchical->links().size()) {
+        state.linkSegments = linkSegments(*hierarchical);
+        state.linkSolver = hierarchical;
+        state.linkCount = hierarchical->links().size();
+        state.linksStale = false;
+    }
+    s.linkSegments = state.linkSegments;
+    if (const auto* importance = dynamic_cast<const ImportanceSolver*>(hierarchical);
+        importance && importance->importance().size() == s.radiosity.size())
+        s.importance = std::make_shared<const std::vector<double>>(importance->importance());
 }
 
 void SolverThread::publish(State& state) {
@@ -302,6 +362,7 @@ void SolverThread::publish(State& state) {
     s->notice = state.notice;
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
+    publishOverlays(state, *s);
     std::shared_ptr<const Snapshot> next(std::move(s));
     {
         std::lock_guard lock(publishedMutex_);

@@ -45,6 +45,8 @@ private:
     void apply(State& state, SolverCommand& command);
     void ensureSolver(State& state);
     void publish(State& state);
+    /// Adds what the display's overlays need (links, importance) to a snapshot being published.
+    static void publishOverlays(State& state, Snapshot& s);
     [[nodiscard]] static bool cancelsLongWork(const SolverCommand& command, SolverActivity activity);
     void requeueMeshingUnlessSuperseded(const MeshingOptions& meshing);
 
