@@ -16,6 +16,8 @@
 #include "render/ColourScale.h"
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
+#include "render/gl/Framebuffer.h"
+#include "render/overlay/DepthVisibility.h"
 
 using namespace radiant;
 using render::ImageRgb8;
@@ -42,9 +44,9 @@ struct Field {
     PatchMesh mesh;
     std::vector<Rgb> radiosity;
 
-    Field() {
+    explicit Field(const Material& material = {"grey", Rgb(0.5), ExitanceRgb{}}) {
         scene.name = "test field";
-        scene.materials.push_back({"grey", Rgb(0.5), ExitanceRgb{}});
+        scene.materials.push_back(material);
         Face face{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, 1}, 1.0};
         scene.surfaces.push_back({"square", 0, {face}, "test"});
         for (int i = 0; i <= kPatches; ++i) {
@@ -250,6 +252,93 @@ TEST_CASE("the shooter's outline and the wireframe darken or colour patch edges 
     CHECK(shooter.x > shooter.z + 20);  // tinted orange
     CHECK(pixelAt(highlighted, 0.9, 0.5) == pixelAt(bare, 0.9, 0.5));  // unchanged patch, not the shooter
     CHECK(plainShooter.x == doctest::Approx(plainShooter.z).epsilon(0.02));  // grey before
+    // The outline runs along the shooter's own edges (x = 0.4 just inside), nowhere else.
+    const glm::dvec3 outlined = pixelAt(highlighted, 0.4 + 1.0 / kWidth, 0.5);
+    INFO("shooter's edge: (" << outlined.x << ", " << outlined.y << ", " << outlined.z << ")");
+    CHECK(outlined.x > outlined.z + 100);
+    CHECK(pixelAt(highlighted, 0.8 + 1.0 / kWidth, 0.5) == pixelAt(bare, 0.8 + 1.0 / kWidth, 0.5));
+}
+
+TEST_CASE("the exposure key: the furnace's E / (1 - rho) from the emitters, held while light spreads, or automatic") {
+    requireDisplay();
+    // A furnace (every patch emits E and reflects rho) converges to B = E / (1 - rho) everywhere.
+    const double exitance = 2.0, reflectance = 0.5;
+    const double converged = exitance / (1 - reflectance);
+    app::Window window{{64, 64, "exposure key test", false, false}};
+    Field furnace({"furnace", Rgb(reflectance), ExitanceRgb(Rgb(exitance))});
+    render::PatchRenderer renderer;
+    renderer.setMesh(furnace.scene, furnace.mesh, 1);
+    render::DisplaySettings settings = plain();
+    settings.shading = render::Shading::Flat;
+    renderer.setSettings(settings);
+    // Early in the solve only the emission is there; the key already expects the converged light.
+    const std::vector<Rgb> early(kPatches, Rgb(exitance));
+    renderer.setRadiosity(early, 1);
+    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(converged));
+    const glm::dvec3 earlyPixel = pixelAt(render::renderOffscreen(renderer, frontCamera(), kWidth, kHeight, {0, 0, 0}), 0.5, 0.5);
+    CHECK(std::abs(earlyPixel.y - toneMapped255(exitance, 0.35 / converged)) <= 2.0);
+    const std::vector<Rgb> late(kPatches, Rgb(converged));
+    renderer.setRadiosity(late, 2);
+    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(converged));
+    const glm::dvec3 latePixel = pixelAt(render::renderOffscreen(renderer, frontCamera(), kWidth, kHeight, {0, 0, 0}), 0.5, 0.5);
+    CHECK(std::abs(latePixel.y - toneMapped255(converged, 0.35 / converged)) <= 2.0);
+    CHECK(latePixel.y > earlyPixel.y + 40);  // the view brightens as light spreads
+
+    // Without emitters there is no balance to key on: the automatic key (the field's mean).
+    Rig rig;
+    const double mean = 0.35 / expectedExposureScale(0.0);
+    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean));
+    // Held: the key of the solution shown when re-keyed, kept while the solution doubles.
+    settings.exposureKey = render::ExposureKey::Held;
+    rig.renderer->setSettings(settings);
+    std::vector<Rgb> doubled = rig.field.radiosity;
+    for (Rgb& b : doubled) b *= 2.0;
+    rig.renderer->setRadiosity(doubled, 2);
+    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean));
+    CHECK(rig.renderer->automaticExposureKeyW_m2() == doctest::Approx(2 * mean));
+    ++settings.rekeyCount;
+    rig.renderer->setSettings(settings);
+    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(2 * mean));
+    // Automatic follows every solution.
+    settings.exposureKey = render::ExposureKey::Automatic;
+    rig.renderer->setSettings(settings);
+    rig.renderer->setRadiosity(rig.field.radiosity, 3);
+    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean));
+}
+
+TEST_CASE("a point behind a nearer surface is hidden in the depth buffer, a point on the front surface is not") {
+    requireDisplay();
+    // The field at z = 0 and, in front of its left half, a blind at z = 0.3.
+    Field field;
+    field.scene.surfaces.push_back({"blind", 0, {Face{{{0, 0, 0.3}, {0.5, 0, 0.3}, {0.5, 1, 0.3}, {0, 1, 0.3}}, {0, 0, 1}, 0.5}}, "test"});
+    const auto corner = static_cast<std::uint32_t>(field.mesh.vertices.size());
+    for (const glm::dvec3& v : {glm::dvec3(0, 0, 0.3), glm::dvec3(0.5, 0, 0.3), glm::dvec3(0.5, 1, 0.3), glm::dvec3(0, 1, 0.3)})
+        field.mesh.vertices.push_back(v);
+    Patch blind;
+    blind.surface = 1;
+    blind.corners = {corner, corner + 1, corner + 2, corner + 3};
+    blind.cornerCount = 4;
+    blind.area = 0.5;
+    blind.centroid = {0.25, 0.5, 0.3};
+    field.mesh.patches.push_back(blind);
+    field.mesh.surfaceFirstPatch = {0, kPatches, kPatches + 1};
+    field.radiosity.emplace_back(1.0);
+
+    app::Window window{{64, 64, "depth test", false, false}};
+    render::PatchRenderer renderer;
+    renderer.setMesh(field.scene, field.mesh, 1);
+    renderer.setRadiosity(field.radiosity, 1);
+    const render::gl::Framebuffer target(kWidth, kHeight);
+    target.bindForDrawing();
+    glClearDepth(1.0);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const render::Viewport viewport{0, 0, kWidth, kHeight};
+    renderer.draw(frontCamera(), viewport.aspect());
+    CHECK(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.75, 0.5, 0.0}));       // open
+    CHECK_FALSE(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.25, 0.5, 0.0}));  // behind
+    CHECK(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.25, 0.5, 0.3}));        // on the blind
+    CHECK_FALSE(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.75, 0.5, 3.0}));  // behind the eye
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
 TEST_CASE("legend: linear ticks on a 1-2-5 step from zero, log ticks at each power of ten") {
