@@ -2,11 +2,15 @@
 
 #include <atomic>
 #include <chrono>
+#include <algorithm>
 #include <cmath>
 #include <thread>
 
+#include "app/panels/MaterialsPanel.h"
+#include "app/solver/LiveSolve.h"
 #include "app/solver/SolverThread.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/scene/SceneLibrary.h"
 
 using namespace radiant;
 using namespace radiant::app;
@@ -107,6 +111,91 @@ TEST_CASE("a material edit reaches the solver and the published scene, and reset
     CHECK(m.exitance.value().x == doctest::Approx(2.0));
     CHECK(snapshot->stats.iteration == 2);
     CHECK(snapshot->radiosity.front().x == doctest::Approx(2.0 * (1 - std::pow(0.25, 3)) / 0.75));
+}
+
+TEST_CASE("a material edit keeps a paused solve paused until the next step, and re-solves a converged one") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    LiveSolve live(thread);
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetTolerance{1e-3});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(MaterialsPanel::submit(live, 0, Rgb(0.25), Rgb(2.0)).empty());
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(live.snapshot().stats.iteration == 2);  // still where the teacher left it
+    CHECK_FALSE(live.snapshot().running);
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    live.refresh();
+    // B_2 = (1 - 0.5^3) / 0.5 = 1.75 with the old material; one step with the new: 2 + 0.25 B_2.
+    CHECK(live.snapshot().stats.iteration == 3);
+    CHECK(live.snapshot().radiosity.front().x == doctest::Approx(2.0 + 0.25 * 1.75));
+
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    live.refresh();
+    const std::size_t converged = live.snapshot().stats.iteration;
+    REQUIRE(live.snapshot().stats.residual < 1e-3);
+    CHECK(MaterialsPanel::submit(live, 0, Rgb(0.5), Rgb(1.0)).empty());
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(live.snapshot().stats.iteration > converged);  // solved again, without being asked to
+    CHECK_FALSE(live.snapshot().running);
+}
+
+TEST_CASE("hierarchical solvers publish their links as segments between the elements they join; others none") {
+    auto plates = std::make_shared<const Scene>(loadScene("parallel-plates").scene);
+    SolverThread thread;
+    thread.send(command::LoadScene{plates, MeshingOptions{0.05}});
+    thread.send(command::SetMethod{SolverMethod::Hierarchical});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    auto snapshot = thread.snapshot();
+    REQUIRE(snapshot->error.empty());
+    REQUIRE(snapshot->linkSegments);
+    CHECK(snapshot->linkSegments->size() == 2 * snapshot->stats.links);
+    CHECK(snapshot->stats.links > 1);  // refined beyond the one link between the two roots
+    CHECK_FALSE(snapshot->importance);
+    // The plates are the unit squares y = 0 and y = 1 facing each other: every link joins one to the other.
+    for (std::size_t i = 0; i + 1 < snapshot->linkSegments->size(); i += 2) {
+        const glm::vec3 a = (*snapshot->linkSegments)[i], b = (*snapshot->linkSegments)[i + 1];
+        CAPTURE(i);
+        CHECK(std::abs(a.y - b.y) == doctest::Approx(1.0));
+        for (const glm::vec3& end : {a, b}) {
+            CHECK((end.x > 0 && end.x < 1 && end.z > 0 && end.z < 1));
+            CHECK((std::abs(end.y) < 1e-6 || std::abs(end.y - 1) < 1e-6));
+        }
+    }
+
+    thread.send(command::SetMethod{SolverMethod::GaussSeidel});
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    snapshot = thread.snapshot();
+    CHECK_FALSE(snapshot->linkSegments);
+    CHECK_FALSE(snapshot->importance);
+}
+
+TEST_CASE("the importance method publishes each patch's importance") {
+    auto cornell = std::make_shared<const Scene>(loadScene("cornell-box").scene);
+    SolverThread thread;
+    thread.send(command::LoadScene{cornell, MeshingOptions{0.05}});
+    thread.send(command::SetMethod{SolverMethod::Importance});
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    const auto snapshot = thread.snapshot();
+    REQUIRE(snapshot->error.empty());
+    REQUIRE(snapshot->importance);
+    REQUIRE(snapshot->mesh);
+    CHECK(snapshot->importance->size() == snapshot->mesh->size());
+    double largest = 0;
+    for (const double y : *snapshot->importance) {
+        CHECK(y >= 0);
+        largest = std::max(largest, y);
+    }
+    CHECK(largest > 0);  // the camera sees the box
+    CHECK(snapshot->linkSegments);
 }
 
 TEST_CASE("materials edits keep the solver (no new form factors), while a new method or mesh builds one") {
