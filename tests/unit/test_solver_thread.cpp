@@ -145,7 +145,7 @@ TEST_CASE("a material edit keeps a paused solve paused until the next step, and 
     CHECK_FALSE(live.snapshot().running);
 }
 
-TEST_CASE("hierarchical solvers publish their links as segments between the elements they join; others none") {
+TEST_CASE("hierarchical solvers publish their links as segments between the elements they join, others none") {
     auto plates = std::make_shared<const Scene>(loadScene("parallel-plates").scene);
     SolverThread thread;
     thread.send(command::LoadScene{plates, MeshingOptions{0.05}});
