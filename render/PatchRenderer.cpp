@@ -508,7 +508,8 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         s.lineProgram.use();
         s.lineProgram.set("viewProjection", viewProjection);
-        s.lineProgram.set("colour", glm::vec4(1.0f, 0.85f, 0.3f, 0.35f));
+        // Faint: thousands of links overlap, and the shading under them must stay readable.
+        s.lineProgram.set("colour", glm::vec4(1.0f, 0.9f, 0.45f, 0.12f));
         s.linkLayout.bind();
         glDrawArrays(GL_LINES, 0, s.linkVertexCount);
         glDisable(GL_BLEND);

@@ -53,9 +53,9 @@ void DisplayPanel::draw() {
     help("The mean radiosity of the lit walls, every frame: always well exposed, but the\n"
          "solve hardly seems to brighten.");
     s.exposureKey = static_cast<render::ExposureKey>(key);
-    ImGui::SameLine();
-    if (ImGui::SmallButton("Re-key")) rekey(s);
-    help("Hold the exposure of the solution shown now (key K).");
+    ImGui::SetCursorPosX(labelRoom * 0.7f);  // under the radio buttons
+    if (ImGui::SmallButton("Re-key on this solution (K)")) rekey(s);
+    help("Hold the exposure that shows the solution on screen now at a middle tone.");
 
     int shading = s.shading == render::Shading::Smooth ? 0 : 1;
     ImGui::TextUnformatted("Shading");
