@@ -26,12 +26,13 @@ std::uint64_t pairSeed(std::uint64_t seed, ElementIndex receiver, ElementIndex s
 } // namespace
 
 HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
-                                       Progress* progress)
-    : options_(options), tree_(scene), threads_(hierarchicalThreadCount()) {
-    if (!(options.minElementArea >= 0) || !(options.linkEpsilon >= 0))
+                                       Progress* progress, HierarchicalRefinement refinement)
+    : options_(options), refinement_(refinement), tree_(scene), threads_(hierarchicalThreadCount()) {
+    if (!(options.minElementArea >= 0) || !(options.linkEpsilon >= 0) || !(refinement.maxLeafArea >= 0))
         throw RadiantError({scene.name, "hierarchical options"},
-                           "minElementArea and linkEpsilon must be >= 0 (got " + std::to_string(options.minElementArea) +
-                               " and " + std::to_string(options.linkEpsilon) + ")");
+                           "minElementArea, linkEpsilon and maxLeafArea must be >= 0 (got " +
+                               std::to_string(options.minElementArea) + ", " + std::to_string(options.linkEpsilon) +
+                               " and " + std::to_string(refinement.maxLeafArea) + ")");
     for (const Surface& surface : scene.surfaces) {
         if (surface.material >= scene.materials.size())
             throw RadiantError({scene.name, "surface '" + surface.name + "'"},
@@ -54,12 +55,19 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     splitsPerThread_.resize(threads_);
     linksPerThread_.resize(threads_);
     gatherPerThread_.resize(threads_);
+    if (refinement.maxLeafArea > 0) splitLeavesLargerThan(refinement.maxLeafArea);
     linkRoots(progress);  // sorted afterwards: the order does not depend on scheduling
     setLeavesToEmission();
     mapSolution();
 }
 
 HierarchicalSolver::~HierarchicalSolver() = default;
+
+void HierarchicalSolver::splitLeavesLargerThan(double area) {
+    // Children follow their parents, so one forward sweep also visits the children it creates.
+    for (ElementIndex e = 0; e < tree_.size(); ++e)
+        if (tree_.isLeaf(e) && tree_.area(e) > area) tree_.subdivide(e);
+}
 
 void HierarchicalSolver::linkRoots(Progress* progress) {
     const auto roots = tree_.roots();
@@ -362,14 +370,11 @@ std::size_t HierarchicalSolver::raysCast() const {
     return visibilityTests_ * static_cast<std::size_t>(std::max(visibilityRays_, 0));
 }
 
-SolverOptions hierarchicalOptionsForElements(const Scene& scene, std::size_t elements, SolverOptions base) {
-    // Measured on the Cornell box (4 visibility rays per link): 1.8k elements at linkEpsilon 1e-4,
-    // 7.0k at 1e-5, 10.2k at 5e-6, 25k at 1e-6, 91k at 1e-7: elements ~ 1780 (1e-4 / eps)^0.57.
-    const double target = static_cast<double>(std::max<std::size_t>(elements, 1));
-    base.linkEpsilon = 1e-4 * std::pow(1780.0 / target, 1 / 0.57);
-    // Small enough not to cap the count, large enough to stop runaway refinement at shadow edges.
-    base.minElementArea = 0.05 * scene.totalArea() / target;
-    return base;
+HierarchicalSetup hierarchicalSetupForElements(const Scene& scene, std::size_t elements, SolverOptions base) {
+    const double leafArea = 2 * scene.totalArea() / static_cast<double>(std::max<std::size_t>(elements, 1));
+    base.linkEpsilon = kScaledLinkEpsilon * leafArea / scene.totalArea();
+    base.minElementArea = 0.25 * leafArea * (1 - 1e-9);  // one level below the target where the oracle insists
+    return {base, HierarchicalRefinement{leafArea}};
 }
 
 std::unique_ptr<Solver> makeHierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,

@@ -24,12 +24,24 @@
 
 namespace radiant {
 
+/// Element resolution asked of the hierarchy on top of the refinement oracle.
+struct HierarchicalRefinement {
+    /// 0: none (elements exist only where the oracle split them). > 0 (m^2): every leaf larger than
+    /// this is split before linking, so the solution has at least this resolution everywhere. With
+    /// linkEpsilon x emitted power proportional to this area (hierarchicalSetupForElements), links
+    /// stay O(elements): at the finest level a link survives only within a fixed angle, and the
+    /// coarser levels, with (area / threshold)^(2/3) links per element but 4x fewer elements per
+    /// level, add a geometric series (Hanrahan et al. 1991, Section 4).
+    double maxLeafArea = 0;
+};
+
 class HierarchicalSolver : public Solver {
 public:
-    /// Builds the element tree (one root per face), the ray caster when visibility is asked for
+    /// Builds the element tree (one root per face, split down to refinement.maxLeafArea), the ray caster when visibility is asked for
     /// (options.formFactors.visibilityRays > 0) and the initial links between every pair of roots
     /// that face each other.
-    HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options, Progress* progress);
+    HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options, Progress* progress,
+                       HierarchicalRefinement refinement = {});
     ~HierarchicalSolver() override;
 
     [[nodiscard]] SolverMethod method() const override { return SolverMethod::Hierarchical; }
@@ -85,6 +97,7 @@ private:
         bool splitReceiver;
     };
 
+    void splitLeavesLargerThan(double area);
     void linkRoots(Progress* progress);
     /// Appends the link receiver <- source to `out` when the two can exchange light.
     void makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out) const;
@@ -98,6 +111,7 @@ private:
     void setLeavesToEmission();
 
     SolverOptions options_;
+    HierarchicalRefinement refinement_;
     ElementTree tree_;
     std::unique_ptr<RayCaster> caster_;
     int visibilityRays_ = 0;
@@ -125,9 +139,16 @@ private:
     IterationStats stats_;
 };
 
-/// Options under which the hierarchical solver refines `scene` to roughly `elements` elements
-/// (within about 20% on the Cornell box, on which the link epsilon's power law was measured; other
-/// scenes differ): for benches that compare methods at equal element counts.
-SolverOptions hierarchicalOptionsForElements(const Scene& scene, std::size_t elements, SolverOptions base = {});
+/// Hierarchical settings for about `elements` leaves, for benches that scale the element count:
+/// leaves no larger than twice the scene's area over `elements` (a face keeps whole quarters, so
+/// leaves average about half that: 9.4k leaves for 10k on the Cornell box), the oracle's threshold
+/// proportional to that area (linkEpsilon = kScaledLinkEpsilon x leaf area / scene area), and one more
+/// level allowed where the oracle insists (shadow edges, contact with other faces).
+struct HierarchicalSetup {
+    SolverOptions options;
+    HierarchicalRefinement refinement;
+};
+inline constexpr double kScaledLinkEpsilon = 0.1;
+HierarchicalSetup hierarchicalSetupForElements(const Scene& scene, std::size_t elements, SolverOptions base = {});
 
 } // namespace radiant
