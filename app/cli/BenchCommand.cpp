@@ -22,6 +22,7 @@ Subcommand addBenchCommand(CLI::App& root) {
                 if (wanted("scenes")) benchScenes(*options).print();
                 if (wanted("form-factors")) benchFormFactors(*options).print();
                 if (wanted("solvers")) benchSolvers(*options).print();
+                if (wanted("solvers")) benchHierarchical(*options).print();
                 if (wanted("hemicube")) benchHemicube(*options).print();
                 if (wanted("frames")) benchFrames(*options).print();
                 return 0;
