@@ -61,6 +61,38 @@ inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n,
     return std::max(0.0, sum / (2 * std::numbers::pi));
 }
 
+/// Squared distance over source area beyond which farFieldFormFactor stands in for the exact kernel:
+/// there the source subtends under 1% of pi sr's worth (A / (pi r^2) < 0.01).
+inline constexpr double kFarFieldDistanceSquaredOverArea = 32;
+
+/// F from a differential area at x (unit normal n) to a source small against its distance, by the
+/// disk approximation A cos(theta_x) cos(theta_q) / (pi r^2 + A) (J. Wallace, K. Elmquist,
+/// E. Haines, "A ray tracing algorithm for progressive radiosity", SIGGRAPH 1989), exact for a
+/// coaxial disk and within a fraction of a percent of the exact kernel when r^2 > 32 A and the
+/// source lies wholly above x's tangent plane. Returns a negative value when some corner of the
+/// source is below that plane: the caller must then clip, i.e. use pointToElementFormFactor.
+inline double farFieldFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source) {
+    for (int i = 0; i < source.count; ++i)
+        if (glm::dot(n, source.vertices[static_cast<std::size_t>(i)] - x) <= 0) return -1;
+    const glm::dvec3 d = source.centroid - x;
+    const double r2 = glm::dot(d, d);
+    const double cosReceiver = glm::dot(n, d);          // times r
+    const double cosSource = -glm::dot(source.normal, d);  // times r
+    if (cosSource <= 0) return 0;
+    return source.area * cosReceiver * cosSource / (r2 * (std::numbers::pi * r2 + source.area));
+}
+
+/// The exact kernel, or the far-field estimate where it is safe (`far`: the pair is far apart for the
+/// source's size).
+inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source,
+                                       bool far) {
+    if (far) {
+        const double estimate = farFieldFormFactor(x, n, source);
+        if (estimate >= 0) return estimate;
+    }
+    return pointToElementFormFactor(x, n, source);
+}
+
 /// The centroids of the four children the element would split into: a 4-point rule over it whose
 /// points are exactly where its children will evaluate.
 inline std::array<glm::dvec3, 4> childCentroids(const PatchPolygon& p) {

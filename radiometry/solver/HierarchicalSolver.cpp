@@ -103,10 +103,17 @@ void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
     // varies across it, which is the error of pushing one value down to all of it.
     // The centroid joins the spread (not the mean): four symmetric points alone would miss a
     // source centred over the receiver.
-    const double atCentroid = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q);
+    // Far for the source's size, the disk approximation replaces Lambert's contour integral (whose
+    // four atan2 per point were half of refinement's time).
+    const glm::dvec3 apart = p.centroid - q.centroid;
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    // The receiver's sample points lie within about sqrt(A_p) of its centroid.
+    const double nearestSample = std::max(0.0, glm::length(apart) - std::sqrt(p.area));
+    const bool far = nearestSample * nearestSample > hierarchical::kFarFieldDistanceSquaredOverArea * q.area;
+    const double atCentroid = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q, far);
     double sum = 0, lowest = atCentroid, highest = atCentroid;
     for (const glm::dvec3& x : hierarchical::childCentroids(p)) {
-        const double f = hierarchical::pointToElementFormFactor(x, p.normal, q);
+        const double f = hierarchical::pointToElementFormFactor(x, p.normal, q, far);
         sum += f;
         lowest = std::min(lowest, f);
         highest = std::max(highest, f);
@@ -114,8 +121,7 @@ void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
     double f = 0.25 * sum;
     const double spread = highest - lowest;
     // Close for their size (e.g. sharing an edge): the 4-point rule is biased there; refine it.
-    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
-    if (f > 0 && glm::dot(p.centroid - q.centroid, p.centroid - q.centroid) < 2.25 * reach * reach)
+    if (f > 0 && glm::dot(apart, apart) < 2.25 * reach * reach)
         f = hierarchical::gaussMeanKernel(p, q);
     if (f <= 0) {
         // No sample point is in front of the source, yet part of the receiver is: the link carries
