@@ -1,7 +1,9 @@
 #pragma once
 // Runs a loop over both cores (or however many there are): the hierarchical solver's refinement and
 // gathering are independent per link. Work is handed out in chunks from an atomic counter, because
-// links near the light cost many more rays than the rest.
+// links near the light cost many more rays than the rest. The shared WorkerPool's sleeping helpers run
+// it (a refinement step makes dozens of short parallel passes; starting threads for each cost more
+// than some passes), or fresh threads when another solver holds the pool.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -9,6 +11,8 @@
 #include <mutex>
 #include <thread>
 #include <vector>
+
+#include "radiometry/solver/WorkerPool.h"
 
 namespace radiant {
 
@@ -40,7 +44,13 @@ void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body
             next.store(count, std::memory_order_relaxed);
         }
     };
-    {
+    WorkerPool& pool = WorkerPool::shared();
+    std::atomic<unsigned> nextThread{0};
+    const auto job = [&] {
+        const unsigned thread = nextThread.fetch_add(1, std::memory_order_relaxed);
+        if (thread < threads) work(thread);
+    };
+    if (pool.helperCount() + 1 < threads || !pool.tryRunOnAll(job)) {
         std::vector<std::jthread> workers;
         workers.reserve(threads - 1);
         for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, t);
