@@ -8,7 +8,10 @@
 // minElementArea. dF is the form factor's uncertainty: the spread of the exact point-to-polygon
 // kernel over the receiver (the error of giving the whole receiver one value), or the whole form
 // factor when a few rays find the link partially visible, so shadow boundaries refine further
-// than fully visible or fully hidden links.
+// than fully visible or fully hidden links. Where the source is small against its distance the
+// kernel is the disk estimate (HierarchicalFormFactor.h). To scale by element count, leaves are
+// split down to a target area and the threshold is tied to it (hierarchicalSetupForElements): links
+// then grow linearly with the leaves, not quadratically.
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
 // cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
 // pulled up as the area-weighted mean of the children.
