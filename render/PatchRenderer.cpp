@@ -14,9 +14,11 @@
 #include <vector>
 
 #include "radiometry/common/Error.h"
+#include "render/FaceGrids.h"
 #include "render/SceneTriangles.h"
 #include "render/gl/Buffer.h"
 #include "render/gl/ShaderProgram.h"
+#include "render/gl/Texture.h"
 #include "render/gl/VertexArray.h"
 
 namespace radiant::render {
@@ -30,6 +32,14 @@ constexpr double kKeyTone = 0.35;
 struct DisplayVertex {
     glm::vec4 colour;  ///< rgb: sRGB display colour; a: position on the colour map
     glm::vec4 tint;    ///< rgb: colour to mix toward; a: amount, +2 when the patch is outlined
+};
+
+/// A corner of a grid face's quad: drawn with its light map (FaceGrids.h).
+struct GridVertex {
+    glm::vec3 position;  ///< m
+    glm::vec3 normal;    ///< the face's, unit
+    glm::vec2 grid;      ///< grid coordinates: (0, 0) .. (columns, rows)
+    glm::vec3 layout;    ///< first atlas row, columns, rows
 };
 
 struct PatchVertex {
@@ -77,9 +87,11 @@ ColourInputs colourInputs(const DisplaySettings& d, double exposureScale) {
             d.highlightShooter, d.showImportance, d.shading};
 }
 
-/// The fragment shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges).
+/// The shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges, 3
+/// light-mapped grid faces rather than triangles).
 std::string variantDefines(unsigned variant) {
     std::string defines;
+    if (variant & 8u) defines += "#define LIGHT_MAP 1\n";
     if (variant & 1u) defines += "#define FALSE_COLOUR 1\n";
     if (variant & 2u) defines += "#define ISOLINES 1\n";
     if (variant & 4u) defines += "#define EDGES 1\n";
@@ -89,7 +101,7 @@ std::string variantDefines(unsigned variant) {
 } // namespace
 
 struct PatchRenderer::State {
-    std::array<std::unique_ptr<gl::ShaderProgram>, 8> programs;  // compiled on first use
+    std::array<std::unique_ptr<gl::ShaderProgram>, 16> programs;  // compiled on first use
     gl::ShaderProgram lineProgram{"wire.vert.glsl", "wire.frag.glsl"};
     gl::Buffer vertices;
     gl::VertexArray layout;
@@ -98,6 +110,15 @@ struct PatchRenderer::State {
     std::vector<std::uint32_t> drawnPatch;      // per drawn vertex
     std::vector<std::uint32_t> drawnSmoothing;  // per drawn vertex
     std::vector<GLint> patchFirstVertex;        // per patch and one past the last: its drawn vertices
+    // Grid faces: one quad each, coloured from atlases of per-vertex and per-patch texels.
+    FaceGrids grids;
+    gl::Buffer gridVertices;
+    gl::VertexArray gridLayout;
+    GLsizei gridVertexCount = 0;
+    std::vector<std::int64_t> patchGrid;  // per patch: its grid, or -1
+    gl::Texture2D vertexAtlas{1, 1, GL_RGBA16F};  // smooth colours, sampled bilinearly
+    gl::Texture2D patchAtlas{1, 1, GL_RGBA16F};   // flat colours, fetched per cell
+    gl::Texture2D tintAtlas{1, 1, GL_RGBA16F};    // tints, fetched per cell
     gl::Buffer links;
     gl::VertexArray linkLayout;
     GLsizei linkVertexCount = 0;
@@ -132,6 +153,12 @@ struct PatchRenderer::State {
     unsigned rekeysSeen = 0;
     double dataMaxW_m2 = 1.0;  // 99th area percentile of the non-emitters' total radiosity, rounded up
 
+    /// The grid faces' quads and atlases, after `grids` was found.
+    void uploadGrids();
+    /// Writes the grid faces' texels: vertex or patch colours (as shown) and tints.
+    void fillAtlases(bool smooth, const std::vector<glm::vec4>& vertexColours,
+                     const std::vector<glm::vec4>& patchColours, const std::vector<glm::vec4>& tints);
+
     const gl::ShaderProgram& program(unsigned variant) {
         if (!programs[variant])
             programs[variant] =
@@ -140,6 +167,60 @@ struct PatchRenderer::State {
     }
 };
 
+void PatchRenderer::State::uploadGrids() {
+    patchGrid.assign(patchSurface.size(), -1);
+    std::vector<GridVertex> quads;
+    quads.reserve(grids.grids.size() * 6);
+    for (std::size_t g = 0; g < grids.grids.size(); ++g) {
+        const FaceGrid& grid = grids.grids[g];
+        for (const std::uint32_t p : grid.cellPatch) patchGrid[p] = static_cast<std::int64_t>(g);
+        const auto columns = static_cast<float>(grid.columns), rows = static_cast<float>(grid.rows);
+        const glm::vec3 atlasLayout(static_cast<float>(grid.atlasRow), columns, rows);
+        const std::array<glm::vec2, 4> at{glm::vec2(0, 0), glm::vec2(columns, 0), glm::vec2(columns, rows),
+                                          glm::vec2(0, rows)};
+        for (const int k : {0, 1, 2, 0, 2, 3})
+            quads.push_back({glm::vec3(grid.corners[static_cast<std::size_t>(k)]), glm::vec3(grid.normal),
+                             at[static_cast<std::size_t>(k)], atlasLayout});
+    }
+    gridVertices.setData(std::span<const GridVertex>(quads));
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    gridVertexCount = static_cast<GLsizei>(quads.size());
+    const auto width = static_cast<int>(grids.atlasWidth), height = static_cast<int>(grids.atlasHeight);
+    vertexAtlas = gl::Texture2D(width, height, GL_RGBA16F);
+    patchAtlas = gl::Texture2D(width, height, GL_RGBA16F);
+    tintAtlas = gl::Texture2D(width, height, GL_RGBA16F);
+}
+
+void PatchRenderer::State::fillAtlases(bool smooth, const std::vector<glm::vec4>& vertexColours,
+                                       const std::vector<glm::vec4>& patchColours, const std::vector<glm::vec4>& tints) {
+    if (grids.grids.empty()) return;
+    const std::size_t width = grids.atlasWidth;
+    std::vector<glm::vec4> colourTexels(width * grids.atlasHeight), tintTexels(width * grids.atlasHeight);
+    for (const FaceGrid& grid : grids.grids) {
+        const std::size_t n = grid.columns, m = grid.rows, row = grid.atlasRow;
+        for (std::size_t j = 0; j < m; ++j)
+            for (std::size_t i = 0; i < n; ++i) {
+                const std::uint32_t patch = grid.cellPatch[j * n + i];
+                tintTexels[(row + j) * width + i] = tints[patch];
+                if (!smooth) colourTexels[(row + j) * width + i] = patchColours[patch];
+            }
+        if (smooth)
+            for (std::size_t j = 0; j <= m; ++j)
+                for (std::size_t i = 0; i <= n; ++i) {
+                    const std::uint32_t corner = grid.vertexCorner[j * (n + 1) + i];
+                    colourTexels[(row + j) * width + i] = vertexColours[patchSmoothing[corner / 4][corner % 4]];
+                }
+    }
+    const auto upload = [&](const gl::Texture2D& texture, const std::vector<glm::vec4>& texels) {
+        glBindTexture(GL_TEXTURE_2D, texture.id());
+        glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, texture.width(), texture.height(), GL_RGBA, GL_FLOAT, texels.data());
+    };
+    upload(smooth ? vertexAtlas : patchAtlas, colourTexels);
+    upload(tintAtlas, tintTexels);
+    glBindTexture(GL_TEXTURE_2D, 0);
+}
+
 PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     constexpr std::size_t stride = sizeof(PatchVertex);
     state_->layout.addFloatAttribute(state_->vertices, 0, 3, stride, offsetof(PatchVertex, position));
@@ -147,6 +228,11 @@ PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     state_->layout.addFloatAttribute(state_->vertices, 2, 3, stride, offsetof(PatchVertex, normal));
     state_->layout.addFloatAttribute(state_->colours, 3, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, colour));
     state_->layout.addFloatAttribute(state_->colours, 4, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, tint));
+    constexpr std::size_t gridStride = sizeof(GridVertex);
+    state_->gridLayout.addFloatAttribute(state_->gridVertices, 0, 3, gridStride, offsetof(GridVertex, position));
+    state_->gridLayout.addFloatAttribute(state_->gridVertices, 2, 3, gridStride, offsetof(GridVertex, normal));
+    state_->gridLayout.addFloatAttribute(state_->gridVertices, 5, 2, gridStride, offsetof(GridVertex, grid));
+    state_->gridLayout.addFloatAttribute(state_->gridVertices, 6, 3, gridStride, offsetof(GridVertex, layout));
     state_->linkLayout.addFloatAttribute(state_->links, 0, 3, sizeof(glm::vec3), 0);
     glBindVertexArray(0);
     state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
@@ -173,6 +259,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.drawnPatch.clear();
     s.drawnSmoothing.clear();
     s.patchFirstVertex.assign(n + 1, 0);
+    s.grids = findFaceGrids(scene, mesh);
     for (std::size_t p = 0; p < n; ++p) {
         const Patch& patch = mesh.patches[p];
         s.patchFirstVertex[p] = static_cast<GLint>(triangles.size());
@@ -186,6 +273,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
                 static_cast<std::uint32_t>(smoothingIds.size()));
             s.patchSmoothing[p][c] = it->second;
         }
+        if (s.grids.patchInGrid[p]) continue;  // drawn by its face's light map
         const auto corner = [&](std::uint8_t c, const glm::vec3& edge) {
             triangles.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, glm::vec3(patch.normal)});
             s.drawnPatch.push_back(static_cast<std::uint32_t>(p));
@@ -203,6 +291,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
         }
     }
     s.patchFirstVertex[n] = static_cast<GLint>(triangles.size());
+    s.uploadGrids();
     s.smoothingVertexCount = smoothingIds.size();
     s.vertices.setData(std::span<const PatchVertex>(triangles));
     s.vertexCount = static_cast<GLsizei>(triangles.size());
@@ -436,6 +525,7 @@ void PatchRenderer::refreshColours() const {
         if (isShooter) tint = addTint(tint, {1.0f, 0.45f, 0.0f, 0.35f});
         tints[p] = glm::vec4(glm::vec3(tint), tint.w + (isShooter ? 2.0f : 0.0f));
     }
+    s.fillAtlases(smooth, vertexColours, patchColours, tints);
     // Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
     std::vector<DisplayVertex> drawn(s.drawnPatch.size());
     for (std::size_t v = 0; v < drawn.size(); ++v)
@@ -449,7 +539,7 @@ void PatchRenderer::refreshColours() const {
 
 void PatchRenderer::draw(const Camera& camera, double aspect) const {
     State& s = *state_;
-    if (!s.haveMesh || s.vertexCount == 0) return;
+    if (!s.haveMesh || (s.vertexCount == 0 && s.gridVertexCount == 0)) return;
     refreshColours();
     const DisplaySettings& d = s.settings;
     const glm::mat4 viewProjection(camera.viewProjection(aspect));
@@ -473,6 +563,17 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         p.set("keyDirection", glm::vec3(glm::normalize(-camera.forward + 0.8 * up + 0.6 * right)));
         p.set("hasRadiosity", s.hasRadiosity ? 1 : 0);
         p.set("wireframe", d.wireframe ? 1 : 0);
+        if (variant & 8u) {
+            s.vertexAtlas.bind(0);
+            s.patchAtlas.bind(1);
+            s.tintAtlas.bind(2);
+            p.set("vertexColours", 0);
+            p.set("patchColours", 1);
+            p.set("patchTints", 2);
+            p.set("smoothShading", d.shading == Shading::Smooth ? 1 : 0);
+            glUniform2f(glGetUniformLocation(p.id(), "atlasSize"), static_cast<float>(s.grids.atlasWidth),
+                        static_cast<float>(s.grids.atlasHeight));
+        }
         // Isolines where the value crosses a tick: linear legends tick every `step` W/m^2 from the
         // minimum, log legends at each power of ten.
         if (range.logScale) {
@@ -487,18 +588,33 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     };
     // Edges cost a derivative per pixel (a third of the frame on llvmpipe): the whole view pays for
     // them only with the wireframe; the shooter's outline redraws just its patch on top.
-    useProgram(colourVariant | (d.wireframe ? 4u : 0u));
+    const unsigned mainVariant = colourVariant | (d.wireframe ? 4u : 0u);
     // Pushed back by their depth slope so overlays drawn at the same depth stay on top.
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
-    s.layout.bind();
-    glDrawArrays(GL_TRIANGLES, 0, s.vertexCount);
+    if (s.vertexCount > 0) {
+        useProgram(mainVariant);
+        s.layout.bind();
+        glDrawArrays(GL_TRIANGLES, 0, s.vertexCount);
+    }
+    if (s.gridVertexCount > 0) {
+        useProgram(mainVariant | 8u);
+        s.gridLayout.bind();
+        glDrawArrays(GL_TRIANGLES, 0, s.gridVertexCount);
+    }
     if (outline && !d.wireframe) {
-        useProgram(colourVariant | 4u);
         glDepthFunc(GL_LEQUAL);  // the same triangles at the same depth
         const auto shooter = static_cast<std::size_t>(s.shooter);
-        glDrawArrays(GL_TRIANGLES, s.patchFirstVertex[shooter],
-                     s.patchFirstVertex[shooter + 1] - s.patchFirstVertex[shooter]);
+        if (const std::int64_t grid = s.patchGrid[shooter]; grid >= 0) {
+            useProgram(colourVariant | 4u | 8u);  // the shooter's whole face: the outline is per cell
+            s.gridLayout.bind();
+            glDrawArrays(GL_TRIANGLES, static_cast<GLint>(grid * 6), 6);
+        } else {
+            useProgram(colourVariant | 4u);
+            s.layout.bind();
+            glDrawArrays(GL_TRIANGLES, s.patchFirstVertex[shooter],
+                         s.patchFirstVertex[shooter + 1] - s.patchFirstVertex[shooter]);
+        }
         glDepthFunc(GL_LESS);
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
@@ -515,6 +631,7 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glDisable(GL_BLEND);
     }
     glBindVertexArray(0);
+    glActiveTexture(GL_TEXTURE0);
 }
 
 } // namespace radiant::render

@@ -4,12 +4,28 @@
 // Compiled in variants (FALSE_COLOUR, ISOLINES, EDGES defined or not) so that software GL pays per
 // pixel only for what is shown. The framebuffer is not GL_FRAMEBUFFER_SRGB: colours written are
 // already sRGB-encoded.
+#ifdef LIGHT_MAP
+// A grid face's colours, looked up per pixel: texel (i, atlas row + j) holds grid vertex (i, j)
+// in vertexColours (bilinear filtering between vertices is Gouraud's interpolation on the
+// grid), and cell (i, j) in patchColours and patchTints.
+in vec2 gridCoordinate;
+flat in vec3 layoutOfGrid;  // first atlas row, columns, rows
+in float shade;
+uniform sampler2D vertexColours;
+uniform sampler2D patchColours;
+uniform sampler2D patchTints;
+uniform vec2 atlasSize;
+uniform int smoothShading;
+uniform float isolineScale;
+uniform float isolineOffset;
+#else
 in vec3 displayColour;
 in float legendT;
 in float isolineU;
 in vec4 tint;
 in vec3 edge;
 flat in int outlined;
+#endif
 
 uniform int wireframe;
 
@@ -34,6 +50,18 @@ vec3 viridis(float t) {
 #endif
 
 void main() {
+#ifdef LIGHT_MAP
+    ivec2 cell = ivec2(clamp(floor(gridCoordinate), vec2(0.0), layoutOfGrid.yz - 1.0)) + ivec2(0, int(layoutOfGrid.x));
+    vec4 sampled = smoothShading != 0
+        ? texture(vertexColours, (gridCoordinate + vec2(0.5, layoutOfGrid.x + 0.5)) / atlasSize)
+        : texelFetch(patchColours, cell, 0);
+    vec3 displayColour = sampled.rgb * shade;
+    float legendT = sampled.a;
+    float isolineU = legendT * isolineScale + isolineOffset;
+    vec4 tintAndOutline = texelFetch(patchTints, cell, 0);
+    int outlined = tintAndOutline.a >= 2.0 ? 1 : 0;
+    vec4 tint = vec4(tintAndOutline.rgb, tintAndOutline.a - 2.0 * float(outlined));
+#endif
 #ifdef FALSE_COLOUR
     vec3 colour = viridis(legendT);
 #ifdef ISOLINES
@@ -47,8 +75,14 @@ void main() {
     colour = mix(colour, tint.rgb, tint.a);
 #ifdef EDGES
     // Distance to the patch's drawn edges in pixels (a quad's diagonal never gets near 0).
+#ifdef LIGHT_MAP
+    // The patch edges are the grid's lines.
+    vec2 toLine = min(fract(gridCoordinate), 1.0 - fract(gridCoordinate)) / max(fwidth(gridCoordinate), vec2(1e-6));
+    float edgeDistance = min(toLine.x, toLine.y);
+#else
     vec3 edgePixels = edge / max(fwidth(edge), vec3(1e-6));
     float edgeDistance = min(min(edgePixels.x, edgePixels.y), edgePixels.z);
+#endif
     if (outlined != 0) colour = mix(colour, vec3(1.0, 0.35, 0.0), 1.0 - smoothstep(2.0, 3.5, edgeDistance));
     if (wireframe != 0) colour = mix(colour, vec3(0.06, 0.07, 0.09), 0.6 * (1.0 - smoothstep(0.4, 1.4, edgeDistance)));
 #endif

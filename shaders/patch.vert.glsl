@@ -6,6 +6,35 @@
 // per frame cost several times the whole frame. Smooth shading is Gouraud's: the colours of the
 // per-vertex radiosity interpolated across the conforming mesh; flat shading gives a patch's
 // vertices its own colour.
+// LIGHT_MAP: a grid face (render/FaceGrids.h) drawn as one quad; its colours come per pixel from
+// atlas textures (patch.frag.glsl), so this passes on only the grid coordinates.
+#ifdef LIGHT_MAP
+layout(location = 0) in vec3 position;
+layout(location = 2) in vec3 normal;      // the face's, unit
+layout(location = 5) in vec2 grid;        // grid coordinates, (0, 0) .. (columns, rows)
+layout(location = 6) in vec3 gridLayout;  // first atlas row, columns, rows
+
+uniform mat4 viewProjection;
+uniform int hasRadiosity;
+uniform vec3 eye;
+uniform vec3 keyDirection;
+
+out vec2 gridCoordinate;
+flat out vec3 layoutOfGrid;
+out float shade;
+
+void main() {
+    shade = 1.0;
+    if (hasRadiosity == 0) {
+        vec3 toEye = normalize(eye - position);
+        vec3 n = dot(normal, toEye) < 0.0 ? -normal : normal;
+        shade = 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
+    }
+    gridCoordinate = grid;
+    layoutOfGrid = gridLayout;
+    gl_Position = viewProjection * vec4(position, 1.0);
+}
+#else
 layout(location = 0) in vec3 position;
 layout(location = 1) in vec3 edgeCoordinate;  // barycentric; held at 1 for a fan's inner diagonal
 layout(location = 2) in vec3 normal;          // the patch's, unit
@@ -42,3 +71,4 @@ void main() {
     edge = edgeCoordinate;
     gl_Position = viewProjection * vec4(position, 1.0);
 }
+#endif

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 #include <cmath>
 #include <cstdlib>
 #include <memory>
@@ -50,7 +51,14 @@ double areaForPatchCount(const Scene& scene, std::size_t target) {
 /// stage); ImGui's draw and the swap (llvmpipe rasterises and shades when the frame is flushed).
 struct FramePhases {
     std::vector<double> stream, panels, scene, present;
+    double processCpuSeconds = 0;  ///< all threads (main, llvmpipe's, the solver's) over the run
 };
+
+double processCpuSeconds() {
+    timespec t{};
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_nsec) * 1e-9;
+}
 
 using Clock = std::chrono::steady_clock;
 double since(Clock::time_point& mark) {
@@ -73,6 +81,7 @@ public:
         std::vector<double> seconds;
         const std::uint64_t uploadsBefore = renderer_.radiosityUploads();
         auto last = Clock::now();
+        const double cpuBefore = processCpuSeconds();
         for (int i = 0; i < count; ++i) {
             frame(phases);
             const auto now = Clock::now();
@@ -80,6 +89,7 @@ public:
             last = now;
         }
         if (uploads) *uploads = renderer_.radiosityUploads() - uploadsBefore;
+        if (phases) phases->processCpuSeconds = processCpuSeconds() - cpuBefore;
         return seconds;
     }
 
@@ -144,7 +154,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     BenchTable table;
     table.title = "Frames: Cornell box at ~20k patches, 1600 x 1000 window, vsync off";
     table.columns = {"solver",       "frames",          "median (ms)",      "p99 (ms)",
-                     "stream (ms)",  "panels (ms)",     "3D draw (ms)",     "UI + swap (ms)",
+                     "CPU / frame (ms)", "stream (ms)",  "panels (ms)",     "3D draw (ms)",     "UI + swap (ms)",
                      "radiosity uploads", "solver steps"};
     const char* display = std::getenv("DISPLAY");
     if (display == nullptr || *display == '\0') {
@@ -182,13 +192,16 @@ BenchTable benchFrames(const BenchOptions& options) {
     const auto row = [&](const char* label, const std::vector<double>& seconds, const FramePhases& phases,
                          std::size_t uploads, std::size_t steps) {
         table.rows.push_back({label, std::to_string(seconds.size()), ms(median(seconds)), ms(percentile(seconds, 0.99)),
-                              ms(median(phases.stream)), ms(median(phases.panels)), ms(median(phases.scene)),
+                              ms(phases.processCpuSeconds / static_cast<double>(seconds.size())), ms(median(phases.stream)), ms(median(phases.panels)), ms(median(phases.scene)),
                               ms(median(phases.present)), std::to_string(uploads), std::to_string(steps)});
     };
     row("idle", idle, idlePhases, idleUploads, stepsIdle);
     row("progressive running", running, runningPhases, runningUploads, stepsRunning);
     table.notes.push_back(std::to_string(patches) + " patches (max patch area " +
                           formatNumber(meshing.maxPatchArea * 1e4) + " cm^2); GL renderer: " + loop.glRenderer());
+    table.notes.push_back("CPU / frame: the process's CPU time over the run (every thread: the window's, llvmpipe's, "
+                          "and while running the solver's) per frame; unlike wall times it does not grow when "
+                          "other processes share the cores");
     table.notes.push_back("phases are medians of each part of a frame: stream = snapshot to renderer, panels = "
                           "ImGui frame, 3D draw = colours, uploads and llvmpipe's vertex stage, UI + swap = "
                           "ImGui's draw and llvmpipe's rasterisation at the flush");

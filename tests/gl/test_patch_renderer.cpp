@@ -15,6 +15,8 @@
 #include "radiometry/common/Error.h"
 #include "render/ColourScale.h"
 #include "render/OffscreenRender.h"
+#include "radiometry/scene/SceneLibrary.h"
+#include "render/FaceGrids.h"
 #include "render/PatchRenderer.h"
 #include "render/gl/Framebuffer.h"
 #include "render/overlay/DepthVisibility.h"
@@ -339,6 +341,50 @@ TEST_CASE("a point behind a nearer surface is hidden in the depth buffer, a poin
     CHECK(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.25, 0.5, 0.3}));        // on the blind
     CHECK_FALSE(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.75, 0.5, 3.0}));  // behind the eye
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+TEST_CASE("face grids: a meshed quad face is found as its n x m grid, cell (i, j) centred at the bilinear point") {
+    // A trapezoid (not a parallelogram), so the bilinear map is not affine.
+    Scene scene;
+    scene.name = "trapezoid";
+    scene.materials.push_back({"grey", Rgb(0.5), ExitanceRgb{}});
+    Face face;
+    face.vertices = {{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.5, 1, 0}};
+    face.updateGeometry();
+    scene.surfaces.push_back({"trapezoid", 0, {face}, "test"});
+    const PatchMesh mesh = meshScene(scene, {face.area / 12.0});
+    const render::FaceGrids found = render::findFaceGrids(scene, mesh);
+    REQUIRE(found.grids.size() == 1);
+    const render::FaceGrid& grid = found.grids.front();
+    CHECK(static_cast<std::size_t>(grid.columns) * grid.rows == mesh.size());
+    CHECK(grid.columns > 1);
+    CHECK(grid.rows > 1);
+    for (std::size_t j = 0; j < grid.rows; ++j)
+        for (std::size_t i = 0; i < grid.columns; ++i) {
+            const double u = (static_cast<double>(i) + 0.5) / grid.columns, v = (static_cast<double>(j) + 0.5) / grid.rows;
+            const glm::dvec3 bilinear = (1 - u) * (1 - v) * face.vertices[0] + u * (1 - v) * face.vertices[1] +
+                                        u * v * face.vertices[2] + (1 - u) * v * face.vertices[3];
+            const Patch& patch = mesh.patches[grid.cellPatch[j * grid.columns + i]];
+            glm::dvec3 centre(0.0);
+            for (int c = 0; c < 4; ++c) centre += mesh.vertices[patch.corners[static_cast<std::size_t>(c)]] / 4.0;
+            CAPTURE(i);
+            CAPTURE(j);
+            CHECK(glm::distance(centre, bilinear) < 1e-9);
+        }
+
+    // The Cornell box: every quad face is a grid; the left wall, two triangles, is not.
+    const Scene cornell = loadScene("cornell-box").scene;
+    const PatchMesh cornellMesh = meshScene(cornell, {0.01});
+    const render::FaceGrids cornellGrids = render::findFaceGrids(cornell, cornellMesh);
+    const std::size_t leftWall = cornell.findSurface("left wall");
+    REQUIRE(leftWall != Scene::npos);
+    for (std::size_t p = 0; p < cornellMesh.size(); ++p) {
+        const Patch& patch = cornellMesh.patches[p];
+        const bool quadFace = cornell.surfaces[patch.surface].faces[patch.face].vertices.size() == 4;
+        CAPTURE(p);
+        CHECK(static_cast<bool>(cornellGrids.patchInGrid[p]) == quadFace);
+        if (patch.surface == leftWall) CHECK_FALSE(cornellGrids.patchInGrid[p]);
+    }
 }
 
 TEST_CASE("legend: linear ticks on a 1-2-5 step from zero, log ticks at each power of ten") {
