@@ -11,6 +11,7 @@
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/GatheringSolver.h"
+#include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ProgressiveSolver.h"
 #include "radiometry/solver/Solver.h"
 
@@ -41,6 +42,8 @@ double peakResidentMegabytes() {
 std::string memoryCell(const Solver& solver) {
     if (const auto* gathering = dynamic_cast<const GatheringSolver*>(&solver))
         return formatNumber(static_cast<double>(gathering->bytes()) / (1 << 20));
+    if (const auto* hierarchical = dynamic_cast<const HierarchicalSolver*>(&solver))  // importance too
+        return formatNumber(static_cast<double>(hierarchical->bytes()) / (1 << 20));
     if (const auto* progressive = dynamic_cast<const ProgressiveSolver*>(&solver))
         return formatNumber(static_cast<double>(progressive->bytes()) / (1 << 20));
     return formatNumber(peakResidentMegabytes()) + " (process peak)";
@@ -132,7 +135,7 @@ BenchTable benchSolvers(const BenchOptions& options) {
         "about sqrt(patches / 50) patches a side on one face (Cohen et al. 1986); every patch receives on its own.",
         "Times are one run each, wall clock, on a machine shared with other work; stepping stops after " +
             formatNumber(budget, 2) +
-            " s per row. Memory: the solver's own arrays (matrix included).",
+            " s per row. Memory: the solver's own arrays (matrix, elements and links included).",
     };
     return table;
 }
