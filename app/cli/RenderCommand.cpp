@@ -67,6 +67,8 @@ int runRender(const RenderOptions& options) {
     renderer.setRadiosity(solver->solution(), 1, -1);
     render::DisplaySettings settings;
     settings.exposureStops = options.exposureStops;
+    // A converged picture is keyed on itself, as --exposure documents (the lab's default keys on the emitters).
+    settings.exposureKey = render::ExposureKey::Automatic;
     settings.colourMode = options.falseColour ? render::ColourMode::FalseColour : render::ColourMode::ToneMapped;
     settings.logScale = options.logScale;
     settings.shading = options.flat ? render::Shading::Flat : render::Shading::Smooth;
