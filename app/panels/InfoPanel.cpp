@@ -49,6 +49,7 @@ void InfoPanel::draw() {
     control("Space", "run / pause the solve");
     control("N or Right", "one step (hold: repeat)");
     control("R", "reset the solve");
+    control("K", "re-key the exposure on this solution");
     control("F", "false colour on/off");
     control("W", "patch wireframe on/off");
     control("C", "home (Cornell) view");
