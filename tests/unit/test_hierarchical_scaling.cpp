@@ -36,6 +36,43 @@ Scaled solveFor(const Scene& scene, const PatchMesh& mesh, std::size_t elements)
 
 TEST_SUITE("hierarchical") {
 
+TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho)") {
+    // Most leaves, split for resolution alone, take their irradiance from their ancestors' links:
+    // in a furnace the surfaces must still show the closed form.
+    const Scene scene = makeFurnace();
+    const double rho = scene.materials[0].reflectance.x, exitance = scene.materials[0].exitance.value().x;
+    const double expected = exitance / (1 - rho);
+    MeshingOptions meshing;
+    meshing.maxPatchArea = 0.1;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    // From 8k elements up (the bench's sizes start at 10k); at 2k the worst patch is 4.4% off: the
+    // threshold, tied to the leaf area, is then 4x looser.
+    for (const std::size_t elements : {std::size_t{8000}, std::size_t{32000}}) {
+        CAPTURE(elements);
+        const HierarchicalSetup setup = hierarchicalSetupForElements(scene, elements);
+        HierarchicalSolver solver(scene, mesh, setup.options, nullptr, setup.refinement);
+        std::size_t steps = 1;
+        while (steps < 200 && solver.step().residual > 1e-6) ++steps;
+        CHECK(steps < 200);
+        const ElementTree& tree = solver.elements();
+        double sum = 0, worstLeaf = 0;
+        for (const ElementIndex e : tree.leaves()) {
+            sum += tree.area(e) * tree.radiosity()[e].x;
+            worstLeaf = std::max(worstLeaf, std::abs(tree.radiosity()[e].x / expected - 1));
+        }
+        CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005));
+        // Per patch (0.1 m^2, what the window shows), as in test_hierarchical.cpp: form-factor errors
+        // amplified by rho / (1 - rho), worst at the box's concave edges.
+        double worstPatch = 0;
+        for (const Rgb& b : solver.solution()) worstPatch = std::max(worstPatch, std::abs(b.x / expected - 1));
+        CHECK(worstPatch < 0.02 * rho / (1 - rho));
+        // Single leaves in the box's corners are far worse (about 20%, as with the fixed threshold):
+        // there each of ~100 links leaves a small error of the same sign. Reported, not hidden.
+        MESSAGE(tree.leafCount() << " leaves: mean off by " << sum / scene.totalArea() / expected - 1
+                                 << ", worst patch by " << worstPatch << ", worst leaf by " << worstLeaf);
+    }
+}
+
 TEST_CASE("hierarchical scaling: 4x the elements, at most 4x the links") {
     const Scene scene = makeCornellBox();
     MeshingOptions meshing;
