@@ -88,10 +88,12 @@ ColourInputs colourInputs(const DisplaySettings& d, double exposureScale) {
 }
 
 /// The shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges, 3
-/// light-mapped grid faces rather than triangles).
+/// light-mapped grid faces rather than triangles, and for those 4 flat shading, 5 tints).
 std::string variantDefines(unsigned variant) {
     std::string defines;
     if (variant & 8u) defines += "#define LIGHT_MAP 1\n";
+    if (variant & 16u) defines += "#define FLAT 1\n";
+    if (variant & 32u) defines += "#define TINTS 1\n";
     if (variant & 1u) defines += "#define FALSE_COLOUR 1\n";
     if (variant & 2u) defines += "#define ISOLINES 1\n";
     if (variant & 4u) defines += "#define EDGES 1\n";
@@ -101,7 +103,7 @@ std::string variantDefines(unsigned variant) {
 } // namespace
 
 struct PatchRenderer::State {
-    std::array<std::unique_ptr<gl::ShaderProgram>, 16> programs;  // compiled on first use
+    std::array<std::unique_ptr<gl::ShaderProgram>, 64> programs;  // compiled on first use
     gl::ShaderProgram lineProgram{"wire.vert.glsl", "wire.frag.glsl"};
     gl::Buffer vertices;
     gl::VertexArray layout;
@@ -131,6 +133,7 @@ struct PatchRenderer::State {
     bool hasRadiosity = false;
     std::int64_t shooter = -1;
     bool coloursDirty = true;
+    bool anyTint = false;  // some patch is tinted or outlined in the colours last made
     ColourInputs coloursMadeWith;
 
     // CPU copies of the data, to smooth, diff and recolour without the mesh.
@@ -517,6 +520,7 @@ void PatchRenderer::refreshColours() const {
             for (std::uint8_t c = 0; c < s.patchCorners[p]; ++c) vertexColours[s.patchSmoothing[p][c]] = patchColours[p];
         }
     }
+    bool anyTint = false;
     for (std::size_t p = 0; p < n; ++p) {
         glm::vec4 tint(0.0f);
         if (inputs.importance) tint = addTint(tint, {1.0f, 0.1f, 0.8f, 0.6f * static_cast<float>(s.importance[p])});
@@ -524,7 +528,9 @@ void PatchRenderer::refreshColours() const {
         if (inputs.highlight && s.hasRadiosity && s.changed[p]) tint = addTint(tint, {1.0f, 0.55f, 0.15f, 0.22f});
         if (isShooter) tint = addTint(tint, {1.0f, 0.45f, 0.0f, 0.35f});
         tints[p] = glm::vec4(glm::vec3(tint), tint.w + (isShooter ? 2.0f : 0.0f));
+        anyTint |= tints[p].w > 0.0f;
     }
+    s.anyTint = anyTint;
     s.fillAtlases(smooth, vertexColours, patchColours, tints);
     // Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
     std::vector<DisplayVertex> drawn(s.drawnPatch.size());
@@ -570,7 +576,6 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
             p.set("vertexColours", 0);
             p.set("patchColours", 1);
             p.set("patchTints", 2);
-            p.set("smoothShading", d.shading == Shading::Smooth ? 1 : 0);
             glUniform2f(glGetUniformLocation(p.id(), "atlasSize"), static_cast<float>(s.grids.atlasWidth),
                         static_cast<float>(s.grids.atlasHeight));
         }
@@ -597,8 +602,9 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         s.layout.bind();
         glDrawArrays(GL_TRIANGLES, 0, s.vertexCount);
     }
+    const unsigned gridVariant = 8u | (d.shading == Shading::Flat ? 16u : 0u);
     if (s.gridVertexCount > 0) {
-        useProgram(mainVariant | 8u);
+        useProgram(mainVariant | gridVariant | (s.anyTint ? 32u : 0u));
         s.gridLayout.bind();
         glDrawArrays(GL_TRIANGLES, 0, s.gridVertexCount);
     }
@@ -606,7 +612,7 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glDepthFunc(GL_LEQUAL);  // the same triangles at the same depth
         const auto shooter = static_cast<std::size_t>(s.shooter);
         if (const std::int64_t grid = s.patchGrid[shooter]; grid >= 0) {
-            useProgram(colourVariant | 4u | 8u);  // the shooter's whole face: the outline is per cell
+            useProgram(colourVariant | 4u | gridVariant | 32u);  // the shooter's whole face: the outline is per cell
             s.gridLayout.bind();
             glDrawArrays(GL_TRIANGLES, static_cast<GLint>(grid * 6), 6);
         } else {

@@ -15,7 +15,6 @@ uniform sampler2D vertexColours;
 uniform sampler2D patchColours;
 uniform sampler2D patchTints;
 uniform vec2 atlasSize;
-uniform int smoothShading;
 uniform float isolineScale;
 uniform float isolineOffset;
 #else
@@ -52,13 +51,20 @@ vec3 viridis(float t) {
 void main() {
 #ifdef LIGHT_MAP
     ivec2 cell = ivec2(clamp(floor(gridCoordinate), vec2(0.0), layoutOfGrid.yz - 1.0)) + ivec2(0, int(layoutOfGrid.x));
-    vec4 sampled = smoothShading != 0
-        ? texture(vertexColours, (gridCoordinate + vec2(0.5, layoutOfGrid.x + 0.5)) / atlasSize)
-        : texelFetch(patchColours, cell, 0);
+    // One lookup per pixel: each is a good part of what software GL spends on a pixel.
+#ifdef FLAT
+    vec4 sampled = texelFetch(patchColours, cell, 0);
+#else
+    vec4 sampled = texture(vertexColours, (gridCoordinate + vec2(0.5, layoutOfGrid.x + 0.5)) / atlasSize);
+#endif
     vec3 displayColour = sampled.rgb * shade;
     float legendT = sampled.a;
     float isolineU = legendT * isolineScale + isolineOffset;
+#ifdef TINTS
     vec4 tintAndOutline = texelFetch(patchTints, cell, 0);
+#else
+    vec4 tintAndOutline = vec4(0.0);  // no patch is tinted or outlined
+#endif
     int outlined = tintAndOutline.a >= 2.0 ? 1 : 0;
     vec4 tint = vec4(tintAndOutline.rgb, tintAndOutline.a - 2.0 * float(outlined));
 #endif
