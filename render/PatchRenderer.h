@@ -2,9 +2,10 @@
 // Radiosity on screen: draws the patch mesh coloured by the newest per-patch radiosity (tone-mapped
 // or false colour), smooth (Gouraud across each surface's conforming mesh) or flat, with overlays
 // (wireframe, last shooter, changed patches, hierarchical links, importance). Streaming is cheap:
-// geometry is uploaded when the mesh generation changes; display colours (16 bytes a patch and a
-// vertex, in buffer textures indexed by patch and vertex id) are worked out on the CPU and uploaded
-// when the solution generation or a colour setting changes, nothing otherwise.
+// geometry is uploaded when the mesh generation changes; display colours are worked out on the CPU
+// when the solution generation, the exposure key or a colour setting changes, nothing otherwise,
+// and uploaded as light-map texels for faces meshed as grids (FaceGrids.h: one quad per face) and
+// as vertex colours for the other patches' triangles.
 // GL-free header; GL objects live in the implementation. Create, use and destroy on the GL thread.
 #include <cstdint>
 #include <glm/vec3.hpp>
