@@ -22,6 +22,8 @@ struct Link {
     [[nodiscard]] double uncertainty() const { return std::abs(static_cast<double>(errorFormFactor)); }
     /// Some but not all of the visibility rays were blocked.
     [[nodiscard]] bool partiallyVisible() const { return std::signbit(errorFormFactor); }
+    /// Every visibility ray arrived (a hidden link carries no form factor, a partial one is signed).
+    [[nodiscard]] bool fullyVisible() const { return formFactor > 0 && !partiallyVisible(); }
 };
 static_assert(sizeof(Link) == 16);
 

@@ -76,28 +76,29 @@ void HierarchicalSolver::linkRoots(Progress* progress) {
         progress->done = 0;
     }
     for (auto& buffer : linksPerThread_) buffer.clear();
+    visibilityTestsPerThread_.assign(threads_, 0);
     parallelChunks(roots.size(), threads_, 1, [&](std::size_t begin, std::size_t end, unsigned thread) {
         for (std::size_t i = begin; i < end; ++i) {
             if (progress) progress->checkCancelled();
             for (const ElementIndex source : roots)
-                if (source != roots[i]) makeLink(roots[i], source, linksPerThread_[thread]);
+                if (source != roots[i] && makeLink(roots[i], source, linksPerThread_[thread]))
+                    ++visibilityTestsPerThread_[thread];
             if (progress) progress->done.fetch_add(1, std::memory_order_relaxed);
         }
     });
-    for (auto& buffer : linksPerThread_) {
-        links_.insert(links_.end(), buffer.begin(), buffer.end());
-        visibilityTests_ += buffer.size();
-    }
+    for (auto& buffer : linksPerThread_) links_.insert(links_.end(), buffer.begin(), buffer.end());
+    for (const std::size_t tests : visibilityTestsPerThread_) visibilityTests_ += tests;
     // The same order whatever the thread timing: results do not depend on scheduling.
     std::sort(links_.begin(), links_.end(), [](const Link& a, const Link& b) {
         return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
     });
 }
 
-void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out) const {
+bool HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out,
+                                  bool parentVisible) const {
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
-    if (!hierarchical::facing(p, q)) return;
+    if (!hierarchical::facing(p, q)) return false;
     // The exact kernel (exact over the source) at the centroids of the receiver's four children: their
     // mean is the link's form factor, their spread how much the receiver's irradiance from this source
     // varies across it, which is the error of pushing one value down to all of it.
@@ -131,18 +132,22 @@ void HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
             bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
                                                                            p.normal, q));
         if (bound > 0) out.push_back({receiver, source, 0.0f, static_cast<float>(bound)});
-        return;
+        return false;
     }
+    // Inherited visibility (Hanrahan et al. 1991, Section 5): the pair lies inside its parents' pair,
+    // which every ray crossed, so its rays would almost surely arrive too. Rays were a third of
+    // refinement's time.
+    const bool test = caster_ && !parentVisible;
     const double visible =
-        caster_ ? hierarchical::elementVisibility(p, q, *caster_, visibilityRays_,
-                                                  pairSeed(options_.seed, receiver, source))
-                : 1.0;
+        test ? hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, pairSeed(options_.seed, receiver, source))
+             : 1.0;
     // Partly visible: the visible share may vary across the receiver by the whole form factor.
     // Fully hidden: only a gap the rays missed could carry light.
     const bool partial = visible > 0 && visible < 1;
     const double uncertainty = partial ? std::max(f, spread) : visible <= 0 ? kHiddenErrorWeight * spread : spread;
     out.push_back({receiver, source, static_cast<float>(f * visible),
                    static_cast<float>(partial ? -uncertainty : uncertainty)});
+    return test;
 }
 
 double HierarchicalSolver::emittedPower() const {
@@ -182,6 +187,7 @@ std::size_t HierarchicalSolver::refine() {
     std::size_t created = 0;
     std::size_t begin = 0;
     bool anySplit = false;
+    visibilityTestsPerThread_.assign(threads_, 0);
     std::vector<Split> splits;
     for (;;) {
         // 1. Which links are too coarse (in parallel; reads only).
@@ -225,14 +231,15 @@ std::size_t HierarchicalSolver::refine() {
             for (std::size_t i = from; i < to; ++i) {
                 scratch.clear();
                 const Link& link = links_[splits[i].link];
+                const bool visible = link.fullyVisible();
                 if (splits[i].splitReceiver) {
                     const ElementIndex first = tree_.firstChild(link.receiver);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        makeLink(c, link.source, scratch);
+                        if (makeLink(c, link.source, scratch, visible)) ++visibilityTestsPerThread_[thread];
                 } else {
                     const ElementIndex first = tree_.firstChild(link.source);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        makeLink(link.receiver, c, scratch);
+                        if (makeLink(link.receiver, c, scratch, visible)) ++visibilityTestsPerThread_[thread];
                 }
                 std::copy(scratch.begin(), scratch.end(), produced_.begin() + ElementTree::kChildCount * i);
             }
@@ -246,7 +253,7 @@ std::size_t HierarchicalSolver::refine() {
             }
     }
     if (anySplit) std::erase_if(links_, [](const Link& link) { return link.receiver == kNoElement; });
-    visibilityTests_ += created;
+    for (const std::size_t tests : visibilityTestsPerThread_) visibilityTests_ += tests;
     return created;
 }
 
@@ -378,7 +385,12 @@ std::size_t HierarchicalSolver::raysCast() const {
 
 HierarchicalSetup hierarchicalSetupForElements(const Scene& scene, std::size_t elements, SolverOptions base) {
     const double leafArea = 2 * scene.totalArea() / static_cast<double>(std::max<std::size_t>(elements, 1));
-    base.linkEpsilon = kScaledLinkEpsilon * leafArea / scene.totalArea();
+    // The oracle refines a link at a leaf's parent (area 4a) while rho B dF 4a > linkEpsilon x emitted
+    // power, i.e. while the radiosity error it leaves exceeds linkEpsilon x power / 4a. linkEpsilon
+    // proportional to a^(3/2) makes that tolerance proportional to the leaf's edge sqrt(a): the error
+    // piecewise-constant leaves have anyway. The tolerance shrinks as elements are added, so the
+    // solution improves with them (linkEpsilon proportional to a held it fixed: more leaves, same answer).
+    base.linkEpsilon = kScaledLinkEpsilon * std::pow(leafArea / scene.totalArea(), 1.5);
     base.minElementArea = 0.25 * leafArea * (1 - 1e-9);  // one level below the target where the oracle insists
     return {base, HierarchicalRefinement{leafArea}};
 }
