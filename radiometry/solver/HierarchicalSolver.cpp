@@ -76,29 +76,28 @@ void HierarchicalSolver::linkRoots(Progress* progress) {
         progress->done = 0;
     }
     for (auto& buffer : linksPerThread_) buffer.clear();
-    visibilityTestsPerThread_.assign(threads_, 0);
+    raysPerThread_.assign(threads_, 0);
     parallelChunks(roots.size(), threads_, 1, [&](std::size_t begin, std::size_t end, unsigned thread) {
         for (std::size_t i = begin; i < end; ++i) {
             if (progress) progress->checkCancelled();
             for (const ElementIndex source : roots)
-                if (source != roots[i] && makeLink(roots[i], source, linksPerThread_[thread]))
-                    ++visibilityTestsPerThread_[thread];
+                if (source != roots[i]) raysPerThread_[thread] += makeLink(roots[i], source, linksPerThread_[thread]);
             if (progress) progress->done.fetch_add(1, std::memory_order_relaxed);
         }
     });
     for (auto& buffer : linksPerThread_) links_.insert(links_.end(), buffer.begin(), buffer.end());
-    for (const std::size_t tests : visibilityTestsPerThread_) visibilityTests_ += tests;
+    for (const std::size_t rays : raysPerThread_) rays_ += rays;
     // The same order whatever the thread timing: results do not depend on scheduling.
     std::sort(links_.begin(), links_.end(), [](const Link& a, const Link& b) {
         return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
     });
 }
 
-bool HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out,
+std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out,
                                   bool parentVisible) const {
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
-    if (!hierarchical::facing(p, q)) return false;
+    if (!hierarchical::facing(p, q)) return 0;
     // The exact kernel (exact over the source) at the centroids of the receiver's four children: their
     // mean is the link's form factor, their spread how much the receiver's irradiance from this source
     // varies across it, which is the error of pushing one value down to all of it.
@@ -132,22 +131,35 @@ bool HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, st
             bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
                                                                            p.normal, q));
         if (bound > 0) out.push_back({receiver, source, 0.0f, static_cast<float>(bound)});
-        return false;
+        return 0;
     }
-    // Inherited visibility (Hanrahan et al. 1991, Section 5): the pair lies inside its parents' pair,
-    // which every ray crossed, so its rays would almost surely arrive too. Rays were a third of
+    // Inherited visibility (after Hanrahan et al. 1991, Section 5): the pair lies inside its parents'
+    // pair, which every ray crossed, so one ray checks it and the full test runs only when that ray is
+    // blocked. Taking the parent's word without a ray lit the floor under the Cornell box's blocks
+    // (a coarse floor element whose four rays all missed the block's footprint); a blocked ray catches
+    // every hidden pair and a partly hidden one as often as it is hidden. Rays were a third of
     // refinement's time.
-    const bool test = caster_ && !parentVisible;
-    const double visible =
-        test ? hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, pairSeed(options_.seed, receiver, source))
-             : 1.0;
+    std::size_t rays = 0;
+    double visible = 1;
+    if (caster_) {
+        const std::uint64_t seed = pairSeed(options_.seed, receiver, source);
+        bool confirmed = false;
+        if (parentVisible) {
+            rays = 1;
+            confirmed = hierarchical::elementVisibility(p, q, *caster_, 1, seed) == 1;
+        }
+        if (!confirmed) {
+            visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed);
+            rays += static_cast<std::size_t>(visibilityRays_);
+        }
+    }
     // Partly visible: the visible share may vary across the receiver by the whole form factor.
     // Fully hidden: only a gap the rays missed could carry light.
     const bool partial = visible > 0 && visible < 1;
     const double uncertainty = partial ? std::max(f, spread) : visible <= 0 ? kHiddenErrorWeight * spread : spread;
     out.push_back({receiver, source, static_cast<float>(f * visible),
                    static_cast<float>(partial ? -uncertainty : uncertainty)});
-    return test;
+    return rays;
 }
 
 double HierarchicalSolver::emittedPower() const {
@@ -187,7 +199,7 @@ std::size_t HierarchicalSolver::refine() {
     std::size_t created = 0;
     std::size_t begin = 0;
     bool anySplit = false;
-    visibilityTestsPerThread_.assign(threads_, 0);
+    raysPerThread_.assign(threads_, 0);
     std::vector<Split> splits;
     for (;;) {
         // 1. Which links are too coarse (in parallel; reads only).
@@ -235,11 +247,11 @@ std::size_t HierarchicalSolver::refine() {
                 if (splits[i].splitReceiver) {
                     const ElementIndex first = tree_.firstChild(link.receiver);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        if (makeLink(c, link.source, scratch, visible)) ++visibilityTestsPerThread_[thread];
+                        raysPerThread_[thread] += makeLink(c, link.source, scratch, visible);
                 } else {
                     const ElementIndex first = tree_.firstChild(link.source);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        if (makeLink(link.receiver, c, scratch, visible)) ++visibilityTestsPerThread_[thread];
+                        raysPerThread_[thread] += makeLink(link.receiver, c, scratch, visible);
                 }
                 std::copy(scratch.begin(), scratch.end(), produced_.begin() + ElementTree::kChildCount * i);
             }
@@ -253,7 +265,7 @@ std::size_t HierarchicalSolver::refine() {
             }
     }
     if (anySplit) std::erase_if(links_, [](const Link& link) { return link.receiver == kNoElement; });
-    for (const std::size_t tests : visibilityTestsPerThread_) visibilityTests_ += tests;
+    for (const std::size_t rays : raysPerThread_) rays_ += rays;
     return created;
 }
 
@@ -380,7 +392,7 @@ std::size_t HierarchicalSolver::bytes() const {
 }
 
 std::size_t HierarchicalSolver::raysCast() const {
-    return visibilityTests_ * static_cast<std::size_t>(std::max(visibilityRays_, 0));
+    return rays_;
 }
 
 HierarchicalSetup hierarchicalSetupForElements(const Scene& scene, std::size_t elements, SolverOptions base) {

@@ -101,9 +101,9 @@ private:
     void splitLeavesLargerThan(double area);
     void linkRoots(Progress* progress);
     /// Appends the link receiver <- source to `out` when the two can exchange light. `parentVisible`:
-    /// the link it refines was fully visible, so this one is taken to be too, without rays. Returns
-    /// whether visibility rays were cast.
-    bool makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out, bool parentVisible = false) const;
+    /// the link it refines was fully visible, so one unblocked ray confirms this one. Returns the
+    /// number of visibility rays cast.
+    std::size_t makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out, bool parentVisible = false) const;
     [[nodiscard]] double linkError(const Link& link) const;
     [[nodiscard]] bool canSplit(ElementIndex e) const;
     std::size_t refine();
@@ -136,10 +136,10 @@ private:
     std::vector<std::vector<Split>> splitsPerThread_;
     std::vector<std::vector<Link>> linksPerThread_;
     std::vector<Link> produced_;
-    std::vector<std::size_t> visibilityTestsPerThread_;
+    std::vector<std::size_t> raysPerThread_;
     std::vector<std::vector<Rgb>> gatherPerThread_;
     std::vector<Rgb> pushedIrradiance_;
-    std::size_t visibilityTests_ = 0;
+    std::size_t rays_ = 0;
     IterationStats stats_;
 };
 
