@@ -149,7 +149,7 @@ private:
 ///   linkEpsilon = kScaledLinkEpsilon x (a / A)^(3/2),
 /// so the radiosity error a link may leave at a leaf's parent shrinks like the leaf's edge, and one
 /// more level allowed where the oracle insists (shadow edges, contact with other faces). Links per
-/// leaf then grow slowly with the leaves (Cornell box: 6.5, 9.7, 12.8 at 10k, 100k, 1M; at most like
+/// leaf then grow slowly with the leaves (Cornell box: 5.9, 8.8, 11.5 at 10k, 100k, 1M; at most like
 /// elements^(1/3) by Hanrahan et al.'s Section 4 count with a tolerance proportional to the edge).
 struct HierarchicalSetup {
     SolverOptions options;

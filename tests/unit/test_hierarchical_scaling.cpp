@@ -138,7 +138,7 @@ TEST_CASE("hierarchical scaling: 4x the elements, links per leaf at most 4^(1/3)
     // Nearly linear memory: with the radiosity tolerance proportional to the leaf's edge h, a level
     // of elements of size s links each to sources within about s / h^(1/3), so links per leaf grow
     // at most like h^(-2/3), i.e. elements^(1/3) (Hanrahan et al. 1991, Section 4's count); measured
-    // 4.4 -> 6.0 here. A fixed threshold, as before this scaling, took them from 17 to 105 between
+    // 4.0 -> 5.4 here. A fixed threshold, as before this scaling, took them from 17 to 105 between
     // 10k and 236k elements.
     CHECK(finePerLeaf <= std::cbrt(4.0) * coarsePerLeaf);
     MESSAGE(coarse.leaves << " leaves, " << coarsePerLeaf << " links per leaf; " << fine.leaves << " leaves, "
