@@ -121,7 +121,9 @@ struct Lab::State {
                 if (!pick || pick->meshGeneration != live.snapshot().meshGeneration) return std::nullopt;
                 return HemicubePoint{pick->point, pick->normal, pick->surface};
             });
-        sidebar.add(std::make_unique<HemispherePanel>(hemicube));
+        auto hemisphere = std::make_unique<HemispherePanel>(hemicube);
+        hemispherePanel = hemisphere.get();
+        sidebar.add(std::move(hemisphere));
         sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
         sidebar.add(std::make_unique<LectureDemosPanel>());
 
@@ -150,6 +152,7 @@ struct Lab::State {
         case GLFW_KEY_W: display.wireframe = !display.wireframe; break;
         case GLFW_KEY_C: orbit.reset(); break;
         case GLFW_KEY_H: panelsVisible = !panelsVisible; break;
+        case GLFW_KEY_S: hemispherePanel->setOverlayShown(!hemispherePanel->overlayShown()); break;
         case GLFW_KEY_F12: screenshotRequested = true; break;
         default: break;
         }
@@ -256,6 +259,7 @@ struct Lab::State {
         patches->setSettings(display);
         patches->draw(lastCamera, viewport.aspect());
         drawProbeMarker(height);  // before other overlays: only the scene hides it
+        hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene
         render::useWholeWindow(width, height);
         ui->render();
         if (capture || screenshotRequested) {
@@ -291,6 +295,7 @@ struct Lab::State {
     std::string titleShown;
     ScenePanel* scenePanel = nullptr;  // owned by the sidebar
     ProbePanel* probePanel = nullptr;  // owned by the sidebar
+    HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;

@@ -2,11 +2,15 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
 #include <string>
 #include <vector>
+
+#include <glm/common.hpp>
 
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/hemicube/HemicubeGather.h"
@@ -17,12 +21,13 @@ namespace radiant::app {
 namespace {
 
 constexpr int kViewPixels = 320;
+constexpr int kOverlayPixels = 512;  ///< the dome's equidistant image: a projector shows the dome a few hundred pixels wide
+constexpr double kOverlayUpAzimuth = std::numbers::pi / 2;
 constexpr int kResolutions[] = {64, 128, 256, 512};
 
 /// The azimuth (in the hemicube's frame) of the direction drawn upward: world up (+y) where the
 /// normal is not vertical, else +z (deeper into the Cornell box, as its camera sees it).
-double upAzimuth(const glm::dvec3& normal) {
-    const HemisphereFrame frame(normal);
+double upAzimuth(const render::HemicubeFrame& frame) {
     glm::dvec3 up{0, 1, 0};
     if (std::abs(frame.normal().y) > 0.99) up = {0, 0, 1};
     const glm::dvec3 local = frame.toLocal(up);
@@ -57,6 +62,11 @@ void HemispherePanel::setTarget(std::size_t surface) {
     dirty_ = true;
 }
 
+void HemispherePanel::setOverlayShown(bool shown) {
+    overlayShown_ = shown;
+    dirty_ = true;  // the dome's image is painted only while it shows
+}
+
 void HemispherePanel::update() {
     session_->update();
     if (!session_->ready()) {
@@ -89,9 +99,12 @@ void HemispherePanel::update() {
 
 void HemispherePanel::recolour() {
     const render::HemicubeCapture& capture = session_->capture();
-    if (!map_ || map_->projection() != projection_ || mapResolution_ != capture.layout.resolution()) {
-        map_.emplace(capture.layout, projection_, kViewPixels, upAzimuth(capture.normal));
+    const double up = upAzimuth(capture.frame);
+    if (!map_ || map_->projection() != projection_ || mapResolution_ != capture.layout.resolution() ||
+        mapUpAzimuth_ != up) {
+        map_.emplace(capture.layout, projection_, kViewPixels, up);
         mapResolution_ = capture.layout.resolution();
+        mapUpAzimuth_ = up;
     }
     const Snapshot& snapshot = session_->snapshot();
     std::vector<glm::vec3> colours;
@@ -101,10 +114,52 @@ void HemispherePanel::recolour() {
     const std::span<const Rgb> radiosity = snapshot.radiosity.size() == snapshot.mesh->size()
                                                ? std::span<const Rgb>(snapshot.radiosity)
                                                : std::span<const Rgb>();
-    const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture.layout, capture.items, capture.normal,
-                                                                   *snapshot.mesh, colours, radiosity, imageOptions_);
+    const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture, *snapshot.mesh, colours, radiosity, imageOptions_);
     if (!texture_) texture_.emplace();
     texture_->upload(kViewPixels, kViewPixels, rgba);
+    if (overlayShown_) recolourOverlay();
+}
+
+void HemispherePanel::recolourOverlay() {
+    const render::HemicubeCapture& capture = session_->capture();
+    const Snapshot& snapshot = session_->snapshot();
+    if (!overlayMap_ || overlayMapResolution_ != capture.layout.resolution()) {
+        overlayMap_.emplace(capture.layout, HemisphereProjection::Equidistant, kOverlayPixels, kOverlayUpAzimuth);
+        overlayMapResolution_ = capture.layout.resolution();
+    }
+    if (sceneExtentMesh_ != snapshot.meshGeneration) {
+        glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+        for (const glm::dvec3& v : snapshot.mesh->vertices) {
+            lo = glm::min(lo, v);
+            hi = glm::max(hi, v);
+        }
+        const glm::dvec3 extent = hi - lo;
+        sceneExtent_ = std::max({extent.x, extent.y, extent.z, 1e-6});
+        sceneExtentMesh_ = snapshot.meshGeneration;
+    }
+    std::vector<glm::vec3> colours;
+    for (const Surface& surface : snapshot.scene->surfaces)
+        colours.push_back(render::displayColour(snapshot.scene->materials[surface.material]));
+    render::HemisphereImageOptions look = imageOptions_;
+    look.grid = false;       // the dome draws its own, a pixel wide at any size
+    look.openSkyAlpha = 0;   // where the point sees nothing, the scene shows through
+    const std::span<const Rgb> radiosity = snapshot.radiosity.size() == snapshot.mesh->size()
+                                               ? std::span<const Rgb>(snapshot.radiosity)
+                                               : std::span<const Rgb>();
+    const std::vector<std::uint8_t> rgba =
+        render::hemisphereImage(*overlayMap_, capture, *snapshot.mesh, colours, radiosity, look);
+    if (!overlay_) overlay_.emplace();
+    overlay_->setImage(kOverlayPixels, rgba, kOverlayUpAzimuth);
+}
+
+void HemispherePanel::drawOverlay(const render::Camera& camera, double aspect) {
+    if (!overlayShown_ || !overlay_ || !session_->ready()) return;
+    const render::HemicubeCapture& capture = session_->capture();
+    const double radius = overlaySize_ * sceneExtent_;
+    // Lifted a hair off the surface, so its rim does not fight the surface for depth.
+    overlay_->setPlacement({capture.point + capture.normal * (2e-3 * radius), capture.frame, radius});
+    overlay_->setStyle({overlayOpacity_, imageOptions_.grid});
+    overlay_->draw(camera, aspect);
 }
 
 void HemispherePanel::remeasure() {
@@ -168,6 +223,15 @@ void HemispherePanel::draw() {
     changed |= ImGui::RadioButton("delta F", &colouring, 2);
     if (changed) setColouring(static_cast<render::HemisphereColouring>(colouring));
     if (ImGui::Checkbox("theta/phi grid (15 / 30 deg)", &imageOptions_.grid)) dirty_ = true;
+    bool dome = overlayShown_;
+    if (ImGui::Checkbox("dome over the point in 3D (S)", &dome)) setOverlayShown(dome);
+    if (overlayShown_) {
+        float size = static_cast<float>(overlaySize_ * 100.0);
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+        if (ImGui::SliderFloat("dome radius, % of scene", &size, 5.0f, 40.0f, "%.0f %%")) overlaySize_ = size / 100.0;
+        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+        ImGui::SliderFloat("dome opacity", &overlayOpacity_, 0.2f, 1.0f, "%.2f");
+    }
     if (ImGui::BeginCombo("target", snapshot.scene->surfaces[*target_].name.c_str())) {
         for (std::size_t s = 0; s < snapshot.scene->surfaces.size(); ++s)
             if (ImGui::Selectable(snapshot.scene->surfaces[s].name.c_str(), s == *target_)) setTarget(s);

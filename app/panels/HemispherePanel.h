@@ -5,6 +5,7 @@
 // area is solid angle), coloured by surface, by radiance, or by the delta form factors, with the
 // theta/phi grid of d omega cells. For a target surface, the hemicube's solid angle and form factor
 // stand beside the exact kernel's (Van Oosterom & Strackee, Lambert; with ray-cast visibility).
+// In the 3D view the same sky is painted on a dome standing on the point (render/hemisphere/).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -15,6 +16,7 @@
 #include "radiometry/probe/Probe.h"
 #include "render/hemicube/HemisphereImage.h"
 #include "render/hemicube/ImageTexture.h"
+#include "render/hemisphere/HemisphereOverlay.h"
 
 namespace radiant {
 class RayCaster;
@@ -44,6 +46,15 @@ public:
     };
     [[nodiscard]] const std::optional<Comparison>& comparison() const { return comparison_; }
 
+    /// The dome over the probe point in the 3D view (on by default; key S in the lab).
+    void setOverlayShown(bool shown);
+    [[nodiscard]] bool overlayShown() const { return overlayShown_; }
+    /// The dome's radius as a fraction of the scene's largest extent (0.15 by default).
+    void setOverlaySize(double fractionOfScene) { overlaySize_ = fractionOfScene; }
+    /// Draws the dome after the scene, into the 3D view's framebuffer and viewport; nothing when it
+    /// is hidden or there is no point yet.
+    void drawOverlay(const render::Camera& camera, double aspect);
+
 private:
     struct Exact;
     void recolour();
@@ -57,11 +68,22 @@ private:
     std::optional<render::ImageTexture> texture_;
     std::optional<HemisphereViewMap> map_;
     int mapResolution_ = 0;
+    double mapUpAzimuth_ = 0;
     std::uint64_t colouredVersion_ = 0;
     std::uint64_t measuredCapture_ = 0;           ///< the geometric readings depend on the items alone
     std::optional<std::size_t> measuredTarget_;
     bool dirty_ = true;
     std::optional<Comparison> comparison_;
+
+    void recolourOverlay();
+    bool overlayShown_ = true;
+    double overlaySize_ = 0.15;
+    float overlayOpacity_ = 0.85f;
+    std::optional<render::HemisphereOverlay> overlay_;
+    std::optional<HemisphereViewMap> overlayMap_;  ///< equidistant, image up at azimuth pi/2
+    int overlayMapResolution_ = 0;
+    double sceneExtent_ = 1;                        ///< m, the mesh's largest bounding-box side
+    std::uint64_t sceneExtentMesh_ = 0;
 };
 
 } // namespace radiant::app

@@ -14,7 +14,6 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/hemicube/HemicubeGather.h"
-#include "radiometry/hemisphere/HemisphericalCoordinates.h"
 #include "render/gl/Buffer.h"
 #include "render/gl/ShaderProgram.h"
 #include "render/gl/VertexArray.h"
@@ -146,8 +145,7 @@ HemicubeRenderer::~HemicubeRenderer() = default;
 HemicubeRenderer::HemicubeRenderer(HemicubeRenderer&&) noexcept = default;
 HemicubeRenderer& HemicubeRenderer::operator=(HemicubeRenderer&&) noexcept = default;
 
-void HemicubeRenderer::render(const glm::dvec3& x, const glm::dvec3& n, const HemicubeLayout& layout) {
-    const HemisphereFrame frame(n);
+void HemicubeRenderer::render(const glm::dvec3& x, const HemicubeFrame& frame, const HemicubeLayout& layout) {
     if (!gl_->target || gl_->target->width != layout.width() || gl_->target->height != layout.height())
         gl_->target.emplace(layout.width(), layout.height());
     // Lifted off its own surface, which then lies just below the horizon instead of on it; the near
@@ -190,8 +188,9 @@ void HemicubeRenderer::render(const glm::dvec3& x, const glm::dvec3& n, const He
 
 HemicubeCapture HemicubeRenderer::capture(const glm::dvec3& x, const glm::dvec3& n, int resolution) {
     const SavedState saved;
-    HemicubeCapture result{HemicubeLayout(resolution), x, glm::normalize(n), {}};
-    render(x, n, result.layout);
+    const HemicubeFrame frame(n);
+    HemicubeCapture result{HemicubeLayout(resolution), x, frame.normal(), frame, {}};
+    render(x, frame, result.layout);
     result.items.resize(result.layout.pixelCount());
     glBindFramebuffer(GL_READ_FRAMEBUFFER, gl_->target->framebuffer);
     glReadBuffer(GL_COLOR_ATTACHMENT0);
@@ -204,7 +203,7 @@ HemicubeCapture HemicubeRenderer::capture(const glm::dvec3& x, const glm::dvec3&
 
 void HemicubeRenderer::renderOnly(const glm::dvec3& x, const glm::dvec3& n, int resolution) {
     const SavedState saved;
-    render(x, n, HemicubeLayout(resolution));
+    render(x, HemicubeFrame(n), HemicubeLayout(resolution));
     glFinish();
 }
 

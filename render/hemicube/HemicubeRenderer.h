@@ -12,6 +12,7 @@
 
 #include "radiometry/hemicube/HemicubeLayout.h"
 #include "radiometry/mesh/PatchMesh.h"
+#include "render/hemicube/HemicubeFrame.h"
 
 namespace radiant::render {
 
@@ -19,6 +20,8 @@ struct HemicubeCapture {
     HemicubeLayout layout{2};
     glm::dvec3 point{0.0};
     glm::dvec3 normal{0, 0, 1};
+    /// The layout's local frame in the world: directions for pixelIndexOf go through frame.toLocal.
+    HemicubeFrame frame{normal};
     /// HemicubeGather.h's encoding, row-major from the bottom row, layout.pixelCount() items.
     std::vector<std::uint32_t> items;
 };
@@ -33,7 +36,7 @@ public:
     HemicubeRenderer(const HemicubeRenderer&) = delete;
     HemicubeRenderer& operator=(const HemicubeRenderer&) = delete;
 
-    /// Renders the hemicube at x about the normal n (made unit) and reads its items back.
+    /// Renders the hemicube at x about the normal n (made unit), in HemicubeFrame(n), and reads its items back.
     /// Leaves the window framebuffer bound and the viewport as it found it. Throws RadiantError for
     /// a resolution HemicubeLayout refuses or a zero normal.
     HemicubeCapture capture(const glm::dvec3& x, const glm::dvec3& n, int resolution);
@@ -44,7 +47,7 @@ public:
 
 private:
     struct GlState;
-    void render(const glm::dvec3& x, const glm::dvec3& n, const HemicubeLayout& layout);
+    void render(const glm::dvec3& x, const HemicubeFrame& frame, const HemicubeLayout& layout);
     std::unique_ptr<GlState> gl_;
     std::size_t patchCount_ = 0;
     double sceneSize_ = 1;  ///< m, the bounding box's diagonal: sets the near plane and the lift off the surface

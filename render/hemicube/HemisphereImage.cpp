@@ -8,7 +8,6 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/hemicube/HemicubeGather.h"
-#include "radiometry/hemisphere/HemisphericalCoordinates.h"
 
 namespace radiant::render {
 namespace {
@@ -32,13 +31,13 @@ const glm::vec3 kOutline{1.0f, 0.8f, 0.0f};
 
 } // namespace
 
-std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
-                                          std::span<const std::uint32_t> items, const glm::dvec3& normal,
+std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeCapture& capture,
                                           const PatchMesh& mesh,
                                           std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
                                           const HemisphereImageOptions& options) {
     const int size = map.size();
-    const HemisphereFrame frame(normal);
+    const HemicubeLayout& layout = capture.layout;
+    const std::span<const std::uint32_t> items = capture.items;
     const std::vector<std::int64_t>& index = map.atlasIndex();
     std::vector<std::uint8_t> rgba(static_cast<std::size_t>(size) * static_cast<std::size_t>(size) * 4, 0);
 
@@ -83,7 +82,7 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
                     // Shaded by the cosine at the surface, so walls of one colour read apart.
                     const std::size_t a = static_cast<std::size_t>(atlas);
                     const int w = layout.width();
-                    const glm::dvec3 toward = glm::normalize(frame.toWorld(
+                    const glm::dvec3 toward = glm::normalize(capture.frame.toWorld(
                         layout.pixelDirection(static_cast<int>(a % static_cast<std::size_t>(w)),
                                               static_cast<int>(a / static_cast<std::size_t>(w)))));
                     colour *= 0.45f + 0.55f * static_cast<float>(std::abs(glm::dot(toward, patch.normal)));
@@ -139,7 +138,7 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
             rgba[pixel * 4 + 0] = toSrgbByte(colour.x);
             rgba[pixel * 4 + 1] = toSrgbByte(colour.y);
             rgba[pixel * 4 + 2] = toSrgbByte(colour.z);
-            rgba[pixel * 4 + 3] = 255;
+            rgba[pixel * 4 + 3] = item == kHemicubeEmpty ? options.openSkyAlpha : std::uint8_t{255};
         }
     return rgba;
 }

@@ -10,10 +10,10 @@
 
 #include <glm/vec3.hpp>
 
-#include "radiometry/hemicube/HemicubeLayout.h"
 #include "radiometry/hemicube/HemisphereProjection.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/units/Quantity.h"
+#include "render/hemicube/HemicubeRenderer.h"
 
 namespace radiant::render {
 
@@ -28,13 +28,13 @@ struct HemisphereImageOptions {
     std::optional<std::size_t> targetSurface;  ///< outlined in yellow
     bool grid = true;                          ///< theta every 15 degrees, phi every 30 degrees
     double radianceScale = 0;                  ///< W/(m^2 sr) mapped to mid-grey; 0: twice the mean seen
+    std::uint8_t openSkyAlpha = 255;           ///< alpha where the point sees nothing (the 3D dome: see-through)
 };
 
-/// RGBA8, map.size() squared pixels, top row first; outside the disk transparent.
+/// RGBA8, map.size() squared pixels, top row first; outside the disk transparent, open sky openSkyAlpha.
 /// `surfaceColours` (linear RGB per surface) is used for Surfaces; `radiosity` (W/m^2 per patch) for Radiance.
-/// `normal` is the hemicube's (world) normal, for shading.
-std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeLayout& layout,
-                                          std::span<const std::uint32_t> items, const glm::dvec3& normal,
+/// `map` must have been made for capture.layout.
+std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeCapture& capture,
                                           const PatchMesh& mesh,
                                           std::span<const glm::vec3> surfaceColours, std::span<const Rgb> radiosity,
                                           const HemisphereImageOptions& options);

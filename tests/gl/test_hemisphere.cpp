@@ -143,7 +143,7 @@ TEST_CASE("Nusselt view of a square over the point covers its form factor's shar
         look.grid = false;
         const std::vector<glm::vec3> red{{1.0f, 0.0f, 0.0f}};
         const std::vector<std::uint8_t> rgba =
-            render::hemisphereImage(nusselt, capture.layout, capture.items, capture.normal, mesh, red, {}, look);
+            render::hemisphereImage(nusselt, capture, mesh, red, {}, look);
         std::size_t disk = 0, square = 0;
         for (std::size_t p = 0; p < rgba.size(); p += 4) {
             if (rgba[p + 3] == 0) continue;  // outside the disk
@@ -296,3 +296,4 @@ TEST_CASE("hemisphere panel in the lab, screenshot" * doctest::skip()) {
     for (int i = 0; i < 6; ++i) image = lab.frameAndCapture();
     render::writePng(image, std::filesystem::path(directory) / "hemisphere-lab.png");
 }
+
