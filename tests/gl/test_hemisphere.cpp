@@ -17,6 +17,9 @@
 #include "radiometry/scene/BuiltinScenes.h"
 #include "render/hemicube/HemicubeRenderer.h"
 #include "render/hemicube/HemisphereImage.h"
+#include "render/hemisphere/HemisphereOverlay.h"
+#include "render/OffscreenRender.h"
+#include "render/camera/Camera.h"
 
 using namespace radiant;
 
@@ -154,6 +157,84 @@ TEST_CASE("Nusselt view of a square over the point covers its form factor's shar
         INFO("the rendered Nusselt image: ", square, " red of ", disk, " disk pixels = ", imageShare);
         CHECK(imageShare == relativeTo(exact, 0.01));
     }
+}
+
+TEST_CASE("the 3D dome over a floor point shows the light overhead and each wall on its own side") {
+    const app::Window window = openContext();
+    const Scene cube = makeUnitCube();  // its whole ceiling emits
+    const PatchMesh mesh = meshScene(cube, meshing(0.04));
+    render::HemicubeRenderer renderer(mesh);
+    const glm::dvec3 point{0.5, 0.0, 0.5}, up{0, 1, 0};
+    const render::HemicubeCapture capture = renderer.capture(point, up, 256);
+
+    // Each surface in one pure hue; the image exactly as the lab paints the dome (no grid in it).
+    std::vector<glm::vec3> colours(cube.surfaces.size(), glm::vec3(0.3f));
+    colours[cube.findSurface("ceiling")] = {1, 0, 0};
+    colours[cube.findSurface("wall +x")] = {0, 1, 0};
+    colours[cube.findSurface("wall -x")] = {0, 0, 1};
+    constexpr int kImage = 256;
+    const double upAzimuth = 0.7;  // any: the overlay must undo it
+    const HemisphereViewMap map(capture.layout, HemisphereProjection::Equidistant, kImage, upAzimuth);
+    render::HemisphereImageOptions look;
+    look.grid = false;
+    const std::vector<std::uint8_t> rgba = render::hemisphereImage(map, capture, mesh, colours, {}, look);
+
+    render::HemisphereOverlay dome;
+    dome.setImage(kImage, rgba, upAzimuth);
+    constexpr double kRadius = 0.3;
+    dome.setPlacement({point, capture.frame, kRadius});
+    dome.setStyle({1.0f, false});
+    // From straight above, turned so that neither image axis lines up with the picture's.
+    render::Camera camera;
+    camera.eye = point + glm::dvec3(0, 1.5, 0);
+    camera.forward = {0, -1, 0};
+    camera.up = glm::normalize(glm::dvec3(0.3, 0, 1));
+    constexpr int kSize = 240;
+    const render::ImageRgb8 image = render::renderOffscreen(dome, camera, kSize, kSize, {0, 0, 0});
+    const render::Viewport viewport{0, 0, kSize, kSize};
+
+    const auto colourAt = [&](const glm::dvec3& world) {
+        const glm::dvec3 p = render::projectToPixel(camera, viewport, world);
+        glm::dvec3 sum(0.0);
+        for (int dy = -1; dy <= 1; ++dy)
+            for (int dx = -1; dx <= 1; ++dx) sum += glm::dvec3(image.at(static_cast<int>(p.x) + dx, static_cast<int>(p.y) + dy));
+        return sum / 9.0;
+    };
+    const auto onDome = [&](const glm::dvec3& direction) { return point + kRadius * glm::normalize(direction); };
+    const glm::dvec3 zenith = colourAt(onDome(up));
+    INFO("zenith ", zenith.x, ", ", zenith.y, ", ", zenith.z);
+    CHECK(zenith.x > 40.0);
+    CHECK(zenith.x > 4.0 * std::max(zenith.y, zenith.z));
+    // 75 degrees from the normal toward +x and -x: the walls there, not mirrored across the dome.
+    const glm::dvec3 towardPlusX = colourAt(onDome({std::sin(1.31), std::cos(1.31), 0.0}));
+    const glm::dvec3 towardMinusX = colourAt(onDome({-std::sin(1.31), std::cos(1.31), 0.0}));
+    INFO("toward +x ", towardPlusX.x, ", ", towardPlusX.y, ", ", towardPlusX.z, "; toward -x ", towardMinusX.x, ", ",
+         towardMinusX.y, ", ", towardMinusX.z);
+    CHECK(towardPlusX.y > 20.0);
+    CHECK(towardPlusX.y > 4.0 * std::max(towardPlusX.x, towardPlusX.z));
+    CHECK(towardMinusX.z > 20.0);
+    CHECK(towardMinusX.z > 4.0 * std::max(towardMinusX.x, towardMinusX.y));
+
+    // Centred on the projected point, with the projected radius: every direction sees a wall of the
+    // closed cube, so the covered pixels are the dome's disk.
+    glm::dvec2 sum(0.0);
+    double covered = 0;
+    for (int y = 0; y < kSize; ++y)
+        for (int x = 0; x < kSize; ++x) {
+            const glm::u8vec3 c = image.at(x, y);
+            if (c.x + c.y + c.z == 0) continue;
+            sum += glm::dvec2(x + 0.5, y + 0.5);
+            ++covered;
+        }
+    REQUIRE(covered > 0);
+    const glm::dvec3 centre = render::projectToPixel(camera, viewport, point);
+    const glm::dvec3 rim = render::projectToPixel(camera, viewport, point + glm::dvec3(kRadius, 0, 0));
+    const double radiusPixels = glm::length(glm::dvec2(rim) - glm::dvec2(centre));
+    INFO("covered centroid (", sum.x / covered, ", ", sum.y / covered, ") vs the point at (", centre.x, ", ", centre.y,
+         "); ", covered, " pixels vs pi r^2 = ", kPi * radiusPixels * radiusPixels);
+    CHECK(std::abs(sum.x / covered - centre.x) < 1.0);
+    CHECK(std::abs(sum.y / covered - centre.y) < 1.0);
+    CHECK(covered == relativeTo(kPi * radiusPixels * radiusPixels, 0.05));
 }
 
 } // TEST_SUITE
