@@ -378,3 +378,53 @@ TEST_CASE("hemisphere panel in the lab, screenshot" * doctest::skip()) {
     render::writePng(image, std::filesystem::path(directory) / "hemisphere-lab.png");
 }
 
+
+#include "render/PatchRenderer.h"
+#include "render/SceneTriangles.h"
+#include "render/gl/Framebuffer.h"
+
+// The dome in the 3D view for the README: the solved Cornell box seen from above the front, a floor
+// point between the blocks, the light outlined as the target.
+TEST_CASE("hemisphere 3D dome, screenshot" * doctest::skip()) {
+    const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR");
+    REQUIRE_MESSAGE(directory != nullptr, "set RADIANT_SCREENSHOT_DIR");
+    const app::Window window = openContext();
+    const Scene box = makeCornellBox();
+    const PatchMesh mesh = meshScene(box, meshing(0.005));
+    const std::unique_ptr<Solver> solver = makeSolver(SolverMethod::GaussSeidel, box, mesh);
+    for (int i = 0; i < 40 && solver->lastStats().residual > 1e-4; ++i) solver->step();
+    const std::vector<Rgb> radiosity = solver->solution();
+
+    const glm::dvec3 point{0.41, 0.0, 0.13}, up{0, 1, 0};
+    render::HemicubeRenderer hemicube(mesh);
+    const render::HemicubeCapture capture = hemicube.capture(point, up, 256);
+    std::vector<glm::vec3> colours;
+    for (const Surface& surface : box.surfaces) colours.push_back(render::displayColour(box.materials[surface.material]));
+    const HemisphereViewMap map(capture.layout, HemisphereProjection::Equidistant, 512);
+    render::HemisphereImageOptions look;
+    look.grid = false;
+    look.openSkyAlpha = 0;
+    look.targetSurface = box.findSurface("light");
+    render::HemisphereOverlay dome;
+    dome.setImage(512, render::hemisphereImage(map, capture, mesh, colours, radiosity, look), kPi / 2);
+    dome.setPlacement({point + up * 1e-4, capture.frame, 0.18 * 0.5592});
+    dome.setStyle({0.9f, true});
+
+    render::PatchRenderer patches;
+    patches.setMesh(box, mesh, 1);
+    patches.setMaterials(box);
+    patches.setRadiosity(radiosity, 1);
+    patches.setSettings(render::DisplaySettings{});
+    render::Camera camera;
+    camera.eye = {0.278, 0.50, -0.42};
+    camera.forward = glm::normalize(glm::dvec3(0.33, 0.08, 0.20) - camera.eye);
+    camera.fieldOfView = Radians(0.62);
+    constexpr int kWidth = 1200, kHeight = 800;
+    render::gl::Framebuffer target(kWidth, kHeight);
+    target.bindForDrawing();
+    glClearColor(0.075f, 0.08f, 0.09f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    patches.draw(camera, static_cast<double>(kWidth) / kHeight);
+    dome.draw(camera, static_cast<double>(kWidth) / kHeight);
+    render::writePng(target.readRgb8(), std::filesystem::path(directory) / "hemisphere-3d.png");
+}
