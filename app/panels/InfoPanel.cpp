@@ -54,6 +54,7 @@ void InfoPanel::draw() {
     control("W", "patch wireframe on/off");
     control("C", "home (Cornell) view");
     control("H", "hide/show panels");
+    control("S", "dome over the probe point on/off");
     control("F12", "screenshot to PNG");
     control("Esc", "quit");
 }
