@@ -46,14 +46,16 @@ public:
     [[nodiscard]] std::uint64_t captureVersion() const { return captureVersion_; }
     [[nodiscard]] double lastRenderSeconds() const { return lastRenderSeconds_; }
 
-    /// L = B / pi (W/(m^2 sr), per band) of the patch seen along a direction in the point's local
-    /// frame (z = normal); zero toward open sky or a surface's back.
+    /// L = B / pi (W/(m^2 sr), per band) of the patch seen along a direction in the capture's local
+    /// frame (capture().frame, z = normal); zero toward open sky or a surface's back.
     [[nodiscard]] Rgb radianceToward(const glm::dvec3& localDirection) const;
 
 private:
     SnapshotSource snapshots_;
     PointSource points_;
-    int resolution_ = 256;  ///< a small light (the Cornell box's) needs ~256 to come within a few per cent
+    /// With the twisted hemicube the Cornell light's F is within 0.2 % of the exact kernel at 256
+    /// (0.4 % at 128) from floor points; a frame-time cost only when the point moves.
+    int resolution_ = 256;
     std::shared_ptr<const Snapshot> snapshot_;
     std::optional<HemicubePoint> point_;
     std::unique_ptr<render::HemicubeRenderer> renderer_;
