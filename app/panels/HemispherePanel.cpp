@@ -21,7 +21,7 @@ namespace radiant::app {
 namespace {
 
 constexpr int kViewPixels = 320;
-constexpr int kOverlayPixels = 512;  ///< the dome's equidistant image: a projector shows the dome a few hundred pixels wide
+constexpr int kOverlayPixels = 384;  ///< the dome's equidistant image: a projector shows the dome a few hundred pixels wide
 constexpr double kOverlayUpAzimuth = std::numbers::pi / 2;
 constexpr int kResolutions[] = {64, 128, 256, 512};
 
@@ -117,7 +117,14 @@ void HemispherePanel::recolour() {
     const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture, *snapshot.mesh, colours, radiosity, imageOptions_);
     if (!texture_) texture_.emplace();
     texture_->upload(kViewPixels, kViewPixels, rgba);
-    if (overlayShown_) recolourOverlay();
+    // The dome's picture changes with the solve only when it shows radiance (~10 ms of CPU a time).
+    const OverlayPainting painting{session_->captureVersion(), snapshot.scene.get(), imageOptions_.colouring, target_,
+                                   imageOptions_.colouring == render::HemisphereColouring::Radiance ? session_->version()
+                                                                                                   : 0};
+    if (overlayShown_ && painting != overlayPainted_) {
+        recolourOverlay();
+        overlayPainted_ = painting;
+    }
 }
 
 void HemispherePanel::recolourOverlay() {

@@ -76,6 +76,16 @@ private:
     std::optional<Comparison> comparison_;
 
     void recolourOverlay();
+    /// What the dome's picture was painted from.
+    struct OverlayPainting {
+        std::uint64_t capture = 0;
+        const Scene* scene = nullptr;  ///< a material edit makes a new scene: new surface colours
+        render::HemisphereColouring colouring = render::HemisphereColouring::Surfaces;
+        std::optional<std::size_t> target;
+        std::uint64_t solution = 0;  ///< the session's version, for radiance; 0 otherwise
+        bool operator==(const OverlayPainting&) const = default;
+    };
+    OverlayPainting overlayPainted_;
     bool overlayShown_ = true;
     double overlaySize_ = 0.15;
     float overlayOpacity_ = 0.85f;

@@ -17,8 +17,8 @@
 namespace radiant::render {
 namespace {
 
-constexpr int kRings = 48;      ///< from the zenith to the horizon
-constexpr int kSegments = 128;  ///< around the normal
+constexpr int kRings = 16;      ///< from the zenith to the horizon (the picture is per pixel; these shape the outline)
+constexpr int kSegments = 64;   ///< around the normal
 
 /// Unit directions (local frame, z up) of the dome's triangles, wound counter-clockwise seen from outside.
 std::vector<glm::vec3> domeTriangles() {
