@@ -33,6 +33,14 @@ glm::dvec3 HemisphereFrame::toLocal(const glm::dvec3& world) const {
     return {glm::dot(world, tangent_), glm::dot(world, bitangent_), glm::dot(world, normal_)};
 }
 
+HemisphereFrame HemisphereFrame::turned(Radians angle) const {
+    const double c = std::cos(angle.value()), s = std::sin(angle.value());
+    HemisphereFrame frame = *this;
+    frame.tangent_ = c * tangent_ + s * bitangent_;
+    frame.bitangent_ = -s * tangent_ + c * bitangent_;
+    return frame;
+}
+
 glm::dvec3 localDirection(SphericalDirection angles) {
     const double sinTheta = std::sin(angles.theta.value());
     return {sinTheta * std::cos(angles.phi.value()), sinTheta * std::sin(angles.phi.value()),

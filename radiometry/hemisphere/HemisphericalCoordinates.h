@@ -29,6 +29,9 @@ public:
 
     [[nodiscard]] glm::dvec3 toWorld(const glm::dvec3& local) const;
     [[nodiscard]] glm::dvec3 toLocal(const glm::dvec3& world) const;
+    /// The same normal with tangent and bitangent turned by `angle` about it (counter-clockwise
+    /// seen from above), e.g. to take a hemicube's pixel rows off a room's axes.
+    [[nodiscard]] HemisphereFrame turned(Radians angle) const;
 
 private:
     glm::dvec3 tangent_{1, 0, 0};

@@ -17,20 +17,12 @@ namespace radiant::render {
 
 inline constexpr double kHemicubeTwist = std::numbers::pi / 8;  ///< radians about the normal
 
-class HemicubeFrame {
+class HemicubeFrame : public HemisphereFrame {
 public:
-    /// Throws RadiantError for a zero or non-finite normal (as HemisphereFrame does).
-    explicit HemicubeFrame(const glm::dvec3& normal, double twist = kHemicubeTwist);
-
-    [[nodiscard]] const glm::dvec3& tangent() const { return tangent_; }
-    [[nodiscard]] const glm::dvec3& bitangent() const { return bitangent_; }
-    [[nodiscard]] const glm::dvec3& normal() const { return normal_; }
-    /// Local coordinates: z along the normal, x along the twisted tangent (HemicubeLayout's frame).
-    [[nodiscard]] glm::dvec3 toWorld(const glm::dvec3& local) const;
-    [[nodiscard]] glm::dvec3 toLocal(const glm::dvec3& world) const;
-
-private:
-    glm::dvec3 tangent_, bitangent_, normal_;
+    /// Throws RadiantError for a zero or non-finite normal (as HemisphereFrame does). Local
+    /// coordinates: z along the normal, x along the twisted tangent (HemicubeLayout's frame).
+    explicit HemicubeFrame(const glm::dvec3& normal, double twist = kHemicubeTwist)
+        : HemisphereFrame(HemisphereFrame(normal).turned(Radians(twist))) {}
 };
 
 } // namespace radiant::render

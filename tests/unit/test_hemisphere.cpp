@@ -165,4 +165,16 @@ TEST_CASE("the accumulator shows a running estimate sample by sample") {
     CHECK_THROWS_AS(RiemannHemisphereSampler(0, 4), RadiantError);
 }
 
+TEST_CASE("a frame turned about its normal keeps the normal and turns tangent and bitangent by the angle") {
+    const HemisphereFrame frame(glm::dvec3(1, 2, 3));
+    const HemisphereFrame quarter = frame.turned(Radians(kPi / 2));
+    CHECK(glm::length(quarter.normal() - frame.normal()) < 1e-12);
+    CHECK(glm::length(quarter.tangent() - frame.bitangent()) < 1e-12);
+    CHECK(glm::length(quarter.bitangent() + frame.tangent()) < 1e-12);
+    const HemisphereFrame eighth = frame.turned(Radians(kPi / 8));
+    CHECK(glm::dot(eighth.tangent(), frame.tangent()) == doctest::Approx(std::cos(kPi / 8)).epsilon(1e-12));
+    CHECK(glm::dot(eighth.tangent(), eighth.bitangent()) == doctest::Approx(0.0).epsilon(1e-12));
+    CHECK(glm::dot(glm::cross(eighth.tangent(), eighth.bitangent()), eighth.normal()) == doctest::Approx(1.0).epsilon(1e-12));
+}
+
 } // TEST_SUITE
