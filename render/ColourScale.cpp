@@ -21,6 +21,22 @@ glm::dvec3 toneMap(const glm::dvec3& radiosityW_m2, double exposureScale) {
     return {linearToSrgb(acesFitted(x.x)), linearToSrgb(acesFitted(x.y)), linearToSrgb(acesFitted(x.z))};
 }
 
+ToneCurveTable::ToneCurveTable() {
+    for (int i = 0; i <= kEntries; ++i) {
+        const double u = static_cast<double>(i) / kEntries;
+        entries_[i] = static_cast<float>(linearToSrgb(acesFitted(u * u * kSaturation)));
+    }
+}
+
+float ToneCurveTable::operator()(double x) const {
+    if (!(x > 0)) return 0.0f;  // also NaN: black, as acesFitted's clamp gives
+    if (x >= kSaturation) return 1.0f;
+    const double at = std::sqrt(x / kSaturation) * kEntries;
+    const auto i = std::min(static_cast<int>(at), kEntries - 1);
+    const auto f = static_cast<float>(at - i);
+    return entries_[i] + f * (entries_[i + 1] - entries_[i]);
+}
+
 glm::dvec3 viridis(double t) {
     // matplotlib's viridis at t = 0, 1/8, ..., 1, sRGB-encoded bytes.
     static constexpr std::array<std::array<double, 3>, 9> table{{{68, 1, 84},

@@ -154,13 +154,22 @@ struct PatchRenderer::State {
     double energyBalanceKeyW_m2 = 0.0;  // from the materials; 0 when nothing emits
     double heldKeyW_m2 = 0.0;           // 0 until re-keyed
     unsigned rekeysSeen = 0;
-    double dataMaxW_m2 = 1.0;  // 99th area percentile of the non-emitters' total radiosity, rounded up
+    // 99th area percentile of the non-emitters' total radiosity, rounded up: the automatic false-colour
+    // range. Its sort is worked out only when false colour asks (dataMax), not on every snapshot.
+    double dataMaxW_m2 = 1.0;
+    bool dataMaxStale = false;
+    double maxTotalAllW_m2 = 0.0;
+    ToneCurveTable toneCurve;
+    // Reused from one recolouring to the next: a snapshot a frame while solving.
+    std::vector<glm::vec4> patchColours, vertexColours, tints, colourTexels, tintTexels;
+    std::vector<DisplayVertex> drawnColours;
+
+    [[nodiscard]] double dataMax();
 
     /// The grid faces' quads and atlases, after `grids` was found.
     void uploadGrids();
-    /// Writes the grid faces' texels: vertex or patch colours (as shown) and tints.
-    void fillAtlases(bool smooth, const std::vector<glm::vec4>& vertexColours,
-                     const std::vector<glm::vec4>& patchColours, const std::vector<glm::vec4>& tints);
+    /// Writes the grid faces' texels from vertexColours or patchColours (as shown) and tints.
+    void fillAtlases(bool smooth);
 
     const gl::ShaderProgram& program(unsigned variant) {
         if (!programs[variant])
@@ -194,11 +203,37 @@ void PatchRenderer::State::uploadGrids() {
     tintAtlas = gl::Texture2D(width, height, GL_RGBA16F);
 }
 
-void PatchRenderer::State::fillAtlases(bool smooth, const std::vector<glm::vec4>& vertexColours,
-                                       const std::vector<glm::vec4>& patchColours, const std::vector<glm::vec4>& tints) {
+double PatchRenderer::State::dataMax() {
+    if (!dataMaxStale) return dataMaxW_m2;
+    std::vector<std::pair<double, double>> reflectorTotals;  // (total radiosity, area) of non-emitters
+    reflectorTotals.reserve(radiosity.size());
+    double reflectorArea = 0;
+    for (std::size_t p = 0; p < radiosity.size(); ++p)
+        if (!patchEmits[p]) {
+            reflectorTotals.emplace_back(total(radiosity[p]), patchArea[p]);
+            reflectorArea += patchArea[p];
+        }
+    // The automatic false-colour range ends at the 99th area percentile of the reflectors: a few
+    // hot patches (beside an emitter, in a corner) would otherwise squash everything else into
+    // the bottom of the colour map. Brighter patches show the top colour.
+    std::sort(reflectorTotals.begin(), reflectorTotals.end());
+    double percentileTotal = 0, area = 0;
+    for (const auto& [value, patchAreaM2] : reflectorTotals) {
+        percentileTotal = value;
+        area += patchAreaM2;
+        if (area >= 0.99 * reflectorArea) break;
+    }
+    dataMaxW_m2 = roundUpForLegend(percentileTotal > 0 ? percentileTotal : maxTotalAllW_m2);
+    dataMaxStale = false;
+    return dataMaxW_m2;
+}
+
+void PatchRenderer::State::fillAtlases(bool smooth) {
     if (grids.grids.empty()) return;
     const std::size_t width = grids.atlasWidth;
-    std::vector<glm::vec4> colourTexels(width * grids.atlasHeight), tintTexels(width * grids.atlasHeight);
+    // Texels outside the grids are never sampled: left as they are.
+    colourTexels.resize(width * grids.atlasHeight);
+    tintTexels.resize(width * grids.atlasHeight);
     for (const FaceGrid& grid : grids.grids) {
         const std::size_t n = grid.columns, m = grid.rows, row = grid.atlasRow;
         for (std::size_t j = 0; j < m; ++j)
@@ -315,6 +350,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.automaticKeyW_m2 = 1.0;
     s.heldKeyW_m2 = 0.0;
     s.dataMaxW_m2 = 1.0;
+    s.dataMaxStale = false;
     s.linkVertexCount = 0;
     setMaterials(scene);
 }
@@ -381,9 +417,7 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
     const double changeFloor = 1e-3 * brightest;
 
     std::vector<glm::dvec4> smoothSums(s.smoothingVertexCount, glm::dvec4(0.0));
-    double litArea = 0, litLuminance = 0, maxTotalAll = 0, reflectorArea = 0;
-    std::vector<std::pair<double, double>> reflectorTotals;  // (total radiosity, area) of non-emitters
-    reflectorTotals.reserve(n);
+    double litArea = 0, litLuminance = 0, maxTotalAll = 0;
     for (std::size_t p = 0; p < n; ++p) {
         const Rgb& b = radiosityW_m2[p];
         if (canDiff) {
@@ -395,13 +429,9 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
         for (std::uint8_t c = 0; c < s.patchCorners[p]; ++c)
             smoothSums[s.patchSmoothing[p][c]] += glm::dvec4(b * s.patchArea[p], s.patchArea[p]);
         maxTotalAll = std::max(maxTotalAll, total(b));
-        if (!s.patchEmits[p]) {
-            reflectorTotals.emplace_back(total(b), s.patchArea[p]);
-            reflectorArea += s.patchArea[p];
-            if (luminance(b) > 0) {
-                litArea += s.patchArea[p];
-                litLuminance += s.patchArea[p] * luminance(b);
-            }
+        if (!s.patchEmits[p] && luminance(b) > 0) {
+            litArea += s.patchArea[p];
+            litLuminance += s.patchArea[p] * luminance(b);
         }
     }
     // A tint on every patch (a gathering sweep) says nothing and hides the picture: tint only when the
@@ -414,17 +444,8 @@ void PatchRenderer::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64
 
     // Before light has bounced, only the emitters are lit: key and range follow them then.
     s.automaticKeyW_m2 = litArea > 0 ? litLuminance / litArea : std::max(maxTotalAll / 3.0, 1e-30);
-    // The automatic false-colour range ends at the 99th area percentile of the reflectors: a few
-    // hot patches (beside an emitter, in a corner) would otherwise squash everything else into
-    // the bottom of the colour map. Brighter patches show the top colour.
-    std::sort(reflectorTotals.begin(), reflectorTotals.end());
-    double percentileTotal = 0, area = 0;
-    for (const auto& [value, patchArea] : reflectorTotals) {
-        percentileTotal = value;
-        area += patchArea;
-        if (area >= 0.99 * reflectorArea) break;
-    }
-    s.dataMaxW_m2 = roundUpForLegend(percentileTotal > 0 ? percentileTotal : maxTotalAll);
+    s.maxTotalAllW_m2 = maxTotalAll;
+    s.dataMaxStale = true;
     s.radiosity.assign(radiosityW_m2.begin(), radiosityW_m2.end());
     s.hasRadiosity = true;
     s.radiosityGeneration = generation;
@@ -465,7 +486,7 @@ const DisplaySettings& PatchRenderer::settings() const { return state_->settings
 
 ColourLegend PatchRenderer::legend() const {
     const DisplaySettings& d = state_->settings;
-    const double top = d.falseColourMaxW_m2 > 0 ? static_cast<double>(d.falseColourMaxW_m2) : state_->dataMaxW_m2;
+    const double top = d.falseColourMaxW_m2 > 0 ? static_cast<double>(d.falseColourMaxW_m2) : state_->dataMax();
     return makeLegend(top, d.logScale, DisplaySettings::kLogDecades);
 }
 
@@ -499,14 +520,23 @@ void PatchRenderer::refreshColours() const {
     const ColourInputs inputs = colourInputs(s.settings, scale);
     if (!s.coloursDirty && inputs == s.coloursMadeWith) return;
     const std::size_t n = s.patchSurface.size();
-    const ColourLegend range = legend();
+    // The colour-map position (alpha) is read only by false colour; the tone-mapped view skips the
+    // legend's percentile sort.
+    const bool falseColour = inputs.mode == ColourMode::FalseColour;
+    const ColourLegend range = falseColour ? legend() : ColourLegend{};
     const auto colourOf = [&](const Rgb& b) {
-        return glm::vec4(glm::vec3(toneMap(b, scale)), static_cast<float>(range.position(total(b))));
+        const float position = falseColour ? static_cast<float>(range.position(total(b))) : 0.0f;
+        return glm::vec4(s.toneCurve(b.x * scale), s.toneCurve(b.y * scale), s.toneCurve(b.z * scale), position);
     };
-    std::vector<glm::vec4> patchColours(n), vertexColours(s.smoothingVertexCount), tints(n, glm::vec4(0.0f));
+    std::vector<glm::vec4>& patchColours = s.patchColours;
+    std::vector<glm::vec4>& vertexColours = s.vertexColours;
+    std::vector<glm::vec4>& tints = s.tints;
+    patchColours.resize(n);
+    vertexColours.resize(s.smoothingVertexCount);
+    tints.resize(n);
     const bool smooth = inputs.shading == Shading::Smooth;
     if (s.hasRadiosity && inputs.mode != ColourMode::Reflectance) {
-        // Only the shading shown: the tone curve is most of this function's time.
+        // Only the shading shown.
         if (smooth)
             for (std::size_t v = 0; v < vertexColours.size(); ++v) vertexColours[v] = colourOf(s.smoothRadiosity[v]);
         else
@@ -531,9 +561,10 @@ void PatchRenderer::refreshColours() const {
         anyTint |= tints[p].w > 0.0f;
     }
     s.anyTint = anyTint;
-    s.fillAtlases(smooth, vertexColours, patchColours, tints);
+    s.fillAtlases(smooth);
     // Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
-    std::vector<DisplayVertex> drawn(s.drawnPatch.size());
+    std::vector<DisplayVertex>& drawn = s.drawnColours;
+    drawn.resize(s.drawnPatch.size());
     for (std::size_t v = 0; v < drawn.size(); ++v)
         drawn[v] = {smooth ? vertexColours[s.drawnSmoothing[v]] : patchColours[s.drawnPatch[v]], tints[s.drawnPatch[v]]};
     glBindBuffer(GL_ARRAY_BUFFER, s.colours.id());
@@ -560,7 +591,7 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     glDisable(GL_BLEND);
     const glm::dvec3 right = glm::normalize(glm::cross(camera.forward, camera.up));
     const glm::dvec3 up = glm::cross(right, camera.forward);
-    const ColourLegend range = legend();
+    const ColourLegend range = falseColour ? legend() : ColourLegend{};
     const auto useProgram = [&](unsigned variant) {
         const gl::ShaderProgram& p = s.program(variant);
         p.use();
