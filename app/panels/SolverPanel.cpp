@@ -101,7 +101,7 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
 }
 
 void SolverPanel::drawPlots(const Snapshot& snapshot) {
-    const std::vector<IterationStats>& history = snapshot.history;
+    const SolveHistory& history = snapshot.history;
     if (history.empty()) return;
     // Long runs (thousands of shots) are thinned to what the plot's width can show.
     const std::size_t stride = std::max<std::size_t>(1, history.size() / 512);

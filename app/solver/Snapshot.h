@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "app/solver/SolveHistory.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/solver/Solver.h"
@@ -32,7 +33,7 @@ struct Snapshot {
     std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
     SolverMethod method = SolverMethod::GaussSeidel;
     IterationStats stats;                   ///< of the last step
-    std::vector<IterationStats> history;    ///< every step since the last reset, for the plots
+    SolveHistory history;                   ///< every step since the last reset, for the plots
     bool running = false;                   ///< stepping by itself until converged or paused
     double tolerance = 1e-4;                ///< running stops when the residual falls below this
     std::string error;                      ///< the last command's failure, empty when it succeeded

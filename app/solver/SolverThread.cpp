@@ -42,7 +42,7 @@ struct SolverThread::State {
     bool running = false;
     std::size_t pendingSteps = 0;
     double tolerance = 1e-4;
-    std::vector<IterationStats> history;
+    SolveHistoryBuilder history;
     std::uint64_t generation = 0;
     std::uint64_t meshGeneration = 0;
     std::uint64_t solverBuilds = 0;
@@ -59,7 +59,7 @@ struct SolverThread::State {
 
 namespace {
 // A shooting solver may take thousands of steps a second; the display needs at most one
-// snapshot per frame, and each snapshot copies the radiosity and the history.
+// snapshot per frame, and each snapshot copies the radiosity (the history only in part).
 constexpr auto kPublishInterval = std::chrono::milliseconds(12);
 
 std::vector<Rgb> emittedRadiosity(const Scene& scene, const PatchMesh& mesh) {
@@ -196,7 +196,7 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
             }
             activity_.store(SolverActivity::Solving);
             const IterationStats stats = state.solver->step();
-            state.history.push_back(stats);
+            state.history.append(stats);
             if (state.pendingSteps > 0) --state.pendingSteps;
             if (state.running && stats.residual < state.tolerance) state.running = false;
             const bool settled = !state.running && state.pendingSteps == 0;
@@ -363,7 +363,7 @@ void SolverThread::publish(State& state) {
     }
     s->method = state.method;
     if (state.solver) s->stats = state.solver->lastStats();
-    s->history = state.history;
+    s->history = state.history.snapshot();
     s->running = state.running || state.pendingSteps > 0;
     s->tolerance = state.tolerance;
     s->error = state.error;

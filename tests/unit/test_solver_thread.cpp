@@ -261,6 +261,46 @@ TEST_CASE("a new method cancels a form-factor computation in progress") {
     CHECK(snapshot->stats.iteration == 1);
 }
 
+TEST_CASE("the history a snapshot carries is every step in order while the worker steps, and shares its full chunks") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    constexpr std::size_t kSteps = 2 * SolveHistory::kChunkSize + 500;
+    thread.send(command::Step{kSteps});
+    // Read every snapshot published during the steps on this thread, as the panels do.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    std::uint64_t seen = 0;
+    std::shared_ptr<const Snapshot> s = thread.snapshot();
+    while (s->stats.iteration < kSteps || s->running) {
+        REQUIRE(std::chrono::steady_clock::now() < deadline);
+        if (s->generation != seen) {
+            seen = s->generation;
+            REQUIRE(s->history.size() == s->stats.iteration);
+            bool inOrder = true;
+            for (std::size_t i = 0; i < s->history.size(); ++i) inOrder = inOrder && s->history[i].iteration == i + 1;
+            REQUIRE(inOrder);
+        }
+        std::this_thread::yield();
+        s = thread.snapshot();
+    }
+    thread.waitUntilIdle();
+    const auto first = thread.snapshot();
+    REQUIRE(first->history.size() == kSteps);
+    CHECK(first->history.back().iteration == kSteps);
+    thread.send(command::Step{SolveHistory::kChunkSize});  // freezes a third chunk
+    thread.waitUntilIdle();
+    const auto second = thread.snapshot();
+    REQUIRE(second->history.size() == kSteps + SolveHistory::kChunkSize);
+    REQUIRE(first->history.frozenChunks().size() == 2);
+    REQUIRE(second->history.frozenChunks().size() == 3);
+    for (std::size_t c = 0; c < 2; ++c)
+        CHECK(first->history.frozenChunks()[c].get() == second->history.frozenChunks()[c].get());
+    CHECK(first->history.size() == kSteps);  // the earlier snapshot did not see the later steps
+    thread.send(command::Reset{});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->history.empty());
+    CHECK(thread.snapshot()->history.frozenChunks().empty());
+}
+
 TEST_CASE("generations only grow, and the reader never waits for a step") {
     SolverThread thread({}, furnaceFactory(0.9, 1.0));
     thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
