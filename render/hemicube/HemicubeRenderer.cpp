@@ -16,6 +16,7 @@
 #include "radiometry/hemicube/HemicubeGather.h"
 #include "render/gl/Buffer.h"
 #include "render/gl/ShaderProgram.h"
+#include "render/gl/StateGuard.h"
 #include "render/gl/VertexArray.h"
 
 namespace radiant::render {
@@ -64,37 +65,6 @@ struct ItemTarget {
         if (items != 0) glDeleteTextures(1, &items);
         framebuffer = depth = items = 0;
     }
-};
-
-/// Restores the caller's framebuffer, viewport and depth state when the hemicube is done.
-class SavedState {
-public:
-    SavedState() {
-        glGetIntegerv(GL_VIEWPORT, viewport_);
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-        depthTest_ = glIsEnabled(GL_DEPTH_TEST);
-        cull_ = glIsEnabled(GL_CULL_FACE);
-        blend_ = glIsEnabled(GL_BLEND);
-        scissor_ = glIsEnabled(GL_SCISSOR_TEST);
-    }
-    ~SavedState() {
-        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
-        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-        enable(GL_DEPTH_TEST, depthTest_);
-        enable(GL_CULL_FACE, cull_);
-        enable(GL_BLEND, blend_);
-        enable(GL_SCISSOR_TEST, scissor_);
-        glBindVertexArray(0);
-        glUseProgram(0);
-    }
-    SavedState(const SavedState&) = delete;
-    SavedState& operator=(const SavedState&) = delete;
-
-private:
-    static void enable(GLenum capability, GLboolean on) { on ? glEnable(capability) : glDisable(capability); }
-    GLint viewport_[4]{};
-    GLint framebuffer_ = 0;
-    GLboolean depthTest_ = GL_FALSE, cull_ = GL_FALSE, blend_ = GL_FALSE, scissor_ = GL_FALSE;
 };
 
 } // namespace
@@ -187,7 +157,7 @@ void HemicubeRenderer::render(const glm::dvec3& x, const HemicubeFrame& frame, c
 }
 
 HemicubeCapture HemicubeRenderer::capture(const glm::dvec3& x, const glm::dvec3& n, int resolution) {
-    const SavedState saved;
+    const gl::StateGuard saved;
     const HemicubeFrame frame(n);
     HemicubeCapture result{HemicubeLayout(resolution), x, frame.normal(), frame, {}};
     render(x, frame, result.layout);
@@ -197,12 +167,11 @@ HemicubeCapture HemicubeRenderer::capture(const glm::dvec3& x, const glm::dvec3&
     glPixelStorei(GL_PACK_ALIGNMENT, 4);
     glReadPixels(0, 0, result.layout.width(), result.layout.height(), GL_RED_INTEGER, GL_UNSIGNED_INT,
                  result.items.data());
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     return result;
 }
 
 void HemicubeRenderer::renderOnly(const glm::dvec3& x, const glm::dvec3& n, int resolution) {
-    const SavedState saved;
+    const gl::StateGuard saved;
     render(x, HemicubeFrame(n), HemicubeLayout(resolution));
     glFinish();
 }

@@ -11,6 +11,7 @@
 
 #include "render/gl/Buffer.h"
 #include "render/gl/ShaderProgram.h"
+#include "render/gl/StateGuard.h"
 #include "render/gl/VertexArray.h"
 #include "render/hemicube/ImageTexture.h"
 
@@ -38,35 +39,6 @@ std::vector<glm::vec3> domeTriangles() {
         }
     return triangles;
 }
-
-/// Restores the blend, depth and cull state the overlay changes.
-class SavedState {
-public:
-    SavedState()
-        : blend_(glIsEnabled(GL_BLEND)), cull_(glIsEnabled(GL_CULL_FACE)), depthTest_(glIsEnabled(GL_DEPTH_TEST)) {
-        glGetBooleanv(GL_DEPTH_WRITEMASK, &depthWrite_);
-        glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
-        glGetIntegerv(GL_CULL_FACE_MODE, &cullMode_);
-    }
-    ~SavedState() {
-        enable(GL_BLEND, blend_);
-        enable(GL_CULL_FACE, cull_);
-        enable(GL_DEPTH_TEST, depthTest_);
-        glDepthMask(depthWrite_);
-        glDepthFunc(static_cast<GLenum>(depthFunc_));
-        glCullFace(static_cast<GLenum>(cullMode_));
-        glBindVertexArray(0);
-        glUseProgram(0);
-    }
-    SavedState(const SavedState&) = delete;
-    SavedState& operator=(const SavedState&) = delete;
-
-private:
-    static void enable(GLenum capability, GLboolean on) { on ? glEnable(capability) : glDisable(capability); }
-    GLboolean blend_, cull_, depthTest_;
-    GLboolean depthWrite_ = GL_TRUE;
-    GLint depthFunc_ = GL_LESS, cullMode_ = GL_BACK;
-};
 
 } // namespace
 
@@ -108,7 +80,7 @@ bool HemisphereOverlay::hasImage() const { return state_->imageSize > 0; }
 
 void HemisphereOverlay::draw(const Camera& camera, double aspect) const {
     if (!hasImage()) return;
-    const SavedState saved;
+    const gl::StateGuard saved;
     const State& s = *state_;
     const HemisphereOverlayPlacement& p = s.placement;
     s.program.use();
