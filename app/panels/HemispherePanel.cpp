@@ -98,6 +98,21 @@ void HemispherePanel::update() {
 }
 
 void HemispherePanel::recolour() {
+    panelImageStale_ = true;
+    imageOptions_.targetSurface = target_;  // the dome outlines it too
+    const Snapshot& snapshot = session_->snapshot();
+    // The dome's picture changes with the solve only when it shows radiance.
+    const OverlayPainting painting{session_->captureVersion(), snapshot.scene.get(), imageOptions_.colouring, target_,
+                                   imageOptions_.colouring == render::HemisphereColouring::Radiance ? session_->version()
+                                                                                                   : 0};
+    if (overlayShown_ && painting != overlayPainted_) {
+        recolourOverlay();
+        overlayPainted_ = painting;
+    }
+}
+
+void HemispherePanel::recolourPanelImage() {
+    panelImageStale_ = false;
     const render::HemicubeCapture& capture = session_->capture();
     const double up = upAzimuth(capture.frame);
     if (!map_ || map_->projection() != projection_ || mapResolution_ != capture.layout.resolution() ||
@@ -110,21 +125,12 @@ void HemispherePanel::recolour() {
     std::vector<glm::vec3> colours;
     for (const Surface& surface : snapshot.scene->surfaces)
         colours.push_back(render::displayColour(snapshot.scene->materials[surface.material]));
-    imageOptions_.targetSurface = target_;
     const std::span<const Rgb> radiosity = snapshot.radiosity.size() == snapshot.mesh->size()
                                                ? std::span<const Rgb>(snapshot.radiosity)
                                                : std::span<const Rgb>();
     const std::vector<std::uint8_t> rgba = render::hemisphereImage(*map_, capture, *snapshot.mesh, colours, radiosity, imageOptions_);
     if (!texture_) texture_.emplace();
     texture_->upload(kViewPixels, kViewPixels, rgba);
-    // The dome's picture changes with the solve only when it shows radiance (~10 ms of CPU a time).
-    const OverlayPainting painting{session_->captureVersion(), snapshot.scene.get(), imageOptions_.colouring, target_,
-                                   imageOptions_.colouring == render::HemisphereColouring::Radiance ? session_->version()
-                                                                                                   : 0};
-    if (overlayShown_ && painting != overlayPainted_) {
-        recolourOverlay();
-        overlayPainted_ = painting;
-    }
 }
 
 void HemispherePanel::recolourOverlay() {
@@ -205,6 +211,7 @@ void HemispherePanel::draw() {
         ImGui::TextWrapped("Click a surface in the 3D view to stand a hemicube on it.");
         return;
     }
+    if (panelImageStale_) recolourPanelImage();
     const Snapshot& snapshot = session_->snapshot();
     const render::HemicubeCapture& capture = session_->capture();
 

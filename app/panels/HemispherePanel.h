@@ -57,7 +57,10 @@ public:
 
 private:
     struct Exact;
+    /// Repaints what changed: the dome at once (the 3D view shows it with the panel closed), the
+    /// panel's own image only when the panel is drawn (panelImageStale_).
     void recolour();
+    void recolourPanelImage();
     void remeasure();
 
     std::shared_ptr<HemicubeSession> session_;
@@ -73,6 +76,7 @@ private:
     std::uint64_t measuredCapture_ = 0;           ///< the geometric readings depend on the items alone
     std::optional<std::size_t> measuredTarget_;
     bool dirty_ = true;
+    bool panelImageStale_ = true;  ///< the panel's image waits for draw(): closed, it costs nothing
     std::optional<Comparison> comparison_;
 
     void recolourOverlay();

@@ -1,6 +1,7 @@
 #include "render/hemicube/HemisphereImage.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 
@@ -66,6 +67,20 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
     const double maxDeltaFormFactor = layout.pixelArea() / std::numbers::pi;
 
     const double lineHalfWidth = 0.8 / size;  // in disk units: about 0.8 px either side
+    // The grid depends on the projection alone: its circles' radii and its spokes' directions are
+    // worked out once, not per pixel (per-pixel trigonometry was most of this function's time, and
+    // it runs on the drawing thread at every solver step while the dome shows radiance).
+    std::array<double, 6> thetaRimRadius{};  // theta = 15, 30, ..., 90 degrees
+    for (int k = 1; k <= 6; ++k) {
+        const double theta = k * std::numbers::pi / 12.0;
+        thetaRimRadius[static_cast<std::size_t>(k - 1)] =
+            diskPointOfDirection(map.projection(), {std::sin(theta), 0.0, std::cos(theta)}).x;
+    }
+    std::array<glm::dvec2, 12> phiDirection{};  // phi = 0, 30, ..., 330 degrees
+    for (int k = 0; k < 12; ++k) {
+        const double phi = k * std::numbers::pi / 6.0;
+        phiDirection[static_cast<std::size_t>(k)] = {std::cos(phi), std::sin(phi)};
+    }
     for (int row = 0; row < size; ++row)
         for (int column = 0; column < size; ++column) {
             const std::size_t pixel = static_cast<std::size_t>(row) * static_cast<std::size_t>(size) +
@@ -108,17 +123,11 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
                 const glm::dvec2 p{(column + 0.5) / size * 2.0 - 1.0, 1.0 - (row + 0.5) / size * 2.0};
                 const double radius = std::hypot(p.x, p.y);
                 bool onGrid = false;
-                for (int k = 1; k <= 6 && !onGrid; ++k) {  // theta = 15, 30, ..., 90 degrees
-                    const double theta = k * std::numbers::pi / 12.0;
-                    const glm::dvec2 rim = diskPointOfDirection(
-                        map.projection(), {std::sin(theta), 0.0, std::cos(theta)});
-                    onGrid = std::abs(radius - rim.x) < lineHalfWidth;
-                }
-                for (int k = 0; k < 12 && !onGrid; ++k) {  // phi = 0, 30, ..., 330 degrees
-                    const double phi = k * std::numbers::pi / 6.0;
-                    const double along = p.x * std::cos(phi) + p.y * std::sin(phi);
-                    const double across = -p.x * std::sin(phi) + p.y * std::cos(phi);
-                    onGrid = along > 0 && std::abs(across) < lineHalfWidth;
+                for (const double rim : thetaRimRadius) onGrid = onGrid || std::abs(radius - rim) < lineHalfWidth;
+                for (const glm::dvec2& d : phiDirection) {
+                    const double along = p.x * d.x + p.y * d.y;
+                    const double across = -p.x * d.y + p.y * d.x;
+                    onGrid = onGrid || (along > 0 && std::abs(across) < lineHalfWidth);
                 }
                 if (onGrid) colour = glm::mix(colour, kGrid, 0.6f);
             }
