@@ -330,6 +330,7 @@ void Lab::resetCamera() { state_->orbit.reset(); }
 const render::GlInfo& Lab::glInfo() const { return state_->gl; }
 void Lab::setPanelsVisible(bool visible) { state_->panelsVisible = visible; }
 std::uint64_t Lab::frameCount() const { return state_->frameCount; }
+std::uint64_t Lab::radiosityUploads() const { return state_->patches->radiosityUploads(); }
 std::shared_ptr<const Snapshot> Lab::snapshot() const { return state_->live.current; }
 void Lab::send(SolverCommand command) { state_->live.send(std::move(command)); }
 void Lab::pressKey(int glfwKey) { state_->onKey(glfwKey); }

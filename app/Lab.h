@@ -50,6 +50,8 @@ public:
     [[nodiscard]] const render::GlInfo& glInfo() const;
     void setPanelsVisible(bool visible);
 
+    /// Snapshots whose radiosity the renderer took (each a recolouring and upload).
+    [[nodiscard]] std::uint64_t radiosityUploads() const;
     /// Frames drawn since the window opened.
     [[nodiscard]] std::uint64_t frameCount() const;
     /// The snapshot the last frame drew.
