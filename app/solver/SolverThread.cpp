@@ -15,6 +15,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ImportanceSolver.h"
+#include "radiometry/solver/WorkerPool.h"
 
 namespace radiant::app {
 
@@ -160,6 +161,9 @@ void SolverThread::waitUntilIdle() {
 
 void SolverThread::workerLoop(const std::stop_token& stop) {
     yieldToTheDisplay();
+    // The shared pool's helpers inherit the policy of the thread that starts them: started here, they
+    // yield to the display as this thread does (a pool started elsewhere first keeps its own).
+    WorkerPool::shared();
     State state;
     while (!stop.stop_requested()) {
         std::optional<SolverCommand> next;

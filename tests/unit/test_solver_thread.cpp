@@ -4,7 +4,15 @@
 #include <chrono>
 #include <algorithm>
 #include <cmath>
+#include <cerrno>
+#include <cstdlib>
+#include <string>
 #include <thread>
+
+#include <sched.h>
+#include <sys/resource.h>
+#include <sys/syscall.h>
+#include <unistd.h>
 
 #include "app/panels/MaterialsPanel.h"
 #include "app/solver/LiveSolve.h"
@@ -68,6 +76,45 @@ SolverFactory furnaceFactory(double rho, double e) {
 } // namespace
 
 TEST_SUITE("solver thread") {
+
+TEST_CASE("the worker yields to the display: SCHED_IDLE by default, the nice value RADIANT_SOLVER_NICE asks for") {
+    // The factory runs on the worker thread: it reads that thread's own policy and nice value.
+    struct Seen {
+        std::atomic<int> policy{-1};
+        std::atomic<int> nice{-100};
+    };
+    const auto observe = [](SolverThread& solver, Seen& seen) {
+        solver.send(command::LoadScene{unitPlate(), MeshingOptions{1.0}});
+        solver.waitUntilIdle();
+        CHECK(seen.policy.load() >= 0);
+    };
+    const auto recordingFactory = [](Seen& seen) -> SolverFactory {
+        return [&seen](SolverMethod method, const Scene&, const PatchMesh& mesh, const SolverOptions&, Progress*) {
+            seen.policy = sched_getscheduler(0);
+            errno = 0;
+            seen.nice = getpriority(PRIO_PROCESS, static_cast<id_t>(syscall(SYS_gettid)));
+            return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), 0.5, 1.0);
+        };
+    };
+    const char* asked = std::getenv("RADIANT_SOLVER_NICE");
+    const std::string saved = asked ? asked : "";
+    {
+        unsetenv("RADIANT_SOLVER_NICE");
+        Seen seen;
+        SolverThread solver({}, recordingFactory(seen));
+        observe(solver, seen);
+        CHECK(seen.policy.load() == SCHED_IDLE);
+    }
+    {
+        setenv("RADIANT_SOLVER_NICE", "7", 1);
+        Seen seen;
+        SolverThread solver({}, recordingFactory(seen));
+        observe(solver, seen);
+        CHECK(seen.policy.load() == SCHED_OTHER);
+        CHECK(seen.nice.load() == 7);
+    }
+    if (asked) setenv("RADIANT_SOLVER_NICE", saved.c_str(), 1); else unsetenv("RADIANT_SOLVER_NICE");
+}
 
 TEST_CASE("steps advance exactly as many iterations as asked, and the snapshot follows") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
