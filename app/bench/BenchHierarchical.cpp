@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/bench/BenchTable.h"
+#include "app/bench/HierarchicalAccuracy.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
@@ -29,57 +30,6 @@ std::string verdict(double seconds, double target) {
     return "missed by " + formatNumber(seconds - target) + " s (" + formatNumber(seconds / target) + "x)";
 }
 
-/// Per surface, the area-weighted mean radiosity (W/m^2 per band).
-std::vector<Rgb> surfaceMeans(const Scene& scene, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
-    std::vector<Rgb> sum(scene.surfaces.size(), Rgb(0.0));
-    std::vector<double> area(scene.surfaces.size(), 0.0);
-    for (std::size_t i = 0; i < mesh.size(); ++i) {
-        sum[mesh.patches[i].surface] += mesh.patches[i].area * radiosity[i];
-        area[mesh.patches[i].surface] += mesh.patches[i].area;
-    }
-    for (std::size_t s = 0; s < sum.size(); ++s) sum[s] /= std::max(area[s], 1e-300);
-    return sum;
-}
-
-/// The largest relative difference of a surface's mean radiosity, over surfaces and bands.
-double worstDeviation(const ElementTree& tree, const std::vector<Rgb>& reference, const Scene& scene) {
-    std::vector<Rgb> sum(reference.size(), Rgb(0.0));
-    for (const ElementIndex e : tree.leaves()) sum[tree.surface(e)] += tree.area(e) * tree.radiosity()[e];
-    double worst = 0;
-    for (std::size_t s = 0; s < reference.size(); ++s)
-        for (int band = 0; band < 3; ++band)
-            if (reference[s][band] > 0)
-                worst = std::max(worst, std::abs(sum[s][band] / scene.surfaces[s].area() / reference[s][band] - 1));
-    return worst;
-}
-
-/// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
-/// worst relative difference over the leaves.
-struct FurnaceError {
-    double rms = 0, worst = 0;
-};
-
-FurnaceError furnaceError(std::size_t elements) {
-    const Scene scene = makeFurnace();
-    MeshingOptions meshing;
-    meshing.maxPatchArea = 0.1;
-    const PatchMesh mesh = meshScene(scene, meshing);
-    const double expected = scene.materials[0].exitance.value().x / (1 - scene.materials[0].reflectance.x);
-    const HierarchicalSetup setup = hierarchicalSetupForElements(scene, elements);
-    HierarchicalSolver solver(scene, mesh, setup.options, nullptr, setup.refinement);
-    for (int k = 0; k < 200 && solver.step().residual > 1e-6; ++k) {
-    }
-    const ElementTree& tree = solver.elements();
-    FurnaceError error;
-    for (const ElementIndex e : tree.leaves()) {
-        const double off = tree.radiosity()[e].x / expected - 1;
-        error.rms += tree.area(e) * off * off;
-        error.worst = std::max(error.worst, std::abs(off));
-    }
-    error.rms = std::sqrt(error.rms / scene.totalArea());
-    return error;
-}
-
 } // namespace
 
 BenchTable benchHierarchical(const BenchOptions& options) {
@@ -93,16 +43,8 @@ BenchTable benchHierarchical(const BenchOptions& options) {
     MeshingOptions meshing;
     meshing.maxPatchArea = 0.01;  // the patches the window shows; the leaves are independent of them
     const PatchMesh mesh = meshScene(scene, meshing);
-    // Reference: Gauss-Seidel to 1e-9 on 0.0025 m^2 patches. Its own meshing error is of the order of
-    // the differences shown: against 0.01, 0.005 and 0.0025 m^2 references the 100k run measured
-    // 3.2%, 2.0% and 0.8%.
-    MeshingOptions referenceMeshing;
-    referenceMeshing.maxPatchArea = options.quick ? 0.02 : 0.0025;
-    const PatchMesh referenceMesh = meshScene(scene, referenceMeshing);
-    const auto reference = makeSolver(SolverMethod::GaussSeidel, scene, referenceMesh);
-    for (int k = 0; k < 500 && reference->step().residual > 1e-9; ++k) {
-    }
-    const std::vector<Rgb> referenceMeans = surfaceMeans(scene, referenceMesh, reference->solution());
+    const GaussSeidelReference& reference = cornellGaussSeidelReference(options.quick);
+    const std::vector<Rgb>& referenceMeans = reference.surfaceMeans;
     const std::vector<Target> targets = options.quick
                                             ? std::vector<Target>{{10'000, 0.3}, {40'000, 0}}
                                             : std::vector<Target>{{10'000, 0.3}, {100'000, 0}, {1'000'000, 60}};
@@ -168,12 +110,11 @@ BenchTable benchHierarchical(const BenchOptions& options) {
             formatNumber(lastRaysPerLink, 2) + " rays per link (inherited visibility), " + formatNumber(lastCpuPerLink, 2) +
             " CPU us per link.",
         "vs Gauss-Seidel: worst surface-mean difference (any band) from Gauss-Seidel to 1e-9 on " +
-            formatNumber(referenceMeshing.maxPatchArea, 2) + " m^2 patches, whose own meshing error is of that order",
+            formatNumber(reference.patchArea, 2) + " m^2 patches, whose own meshing error is of that order",
         "(against 0.01, 0.005 and 0.0025 m^2 references the 100k run measured 3.2%, 2.0% and 0.8%).",
         "Furnace: the same setup on the closed furnace, to residual 1e-6, each leaf against E / (1 - rho) (exact",
         "everywhere): area-weighted rms and worst leaf (a corner leaf, where ~100 pushed-down links err the same way).",
-        "For scale (issue #5): RenderPark 0.3-0.5 s for 5.4k elements / 42k links; SPLASH-2 6.3 s on two threads",
-        "for 25k elements / 1.3M interactions.",
+        "Against RenderPark and SPLASH-2 (issue #5) at their element and link counts: the next table.",
     };
     return table;
 }

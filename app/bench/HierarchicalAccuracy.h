@@ -1,0 +1,39 @@
+#pragma once
+// How right a hierarchical solve of the Cornell box is, for the bench tables that time one: its
+// surface means against a fine Gauss-Seidel solve, and the same setup's leaves in the furnace against
+// the closed form. Shared so that every hierarchical table states accuracy by the same yardstick.
+#include <cstddef>
+#include <vector>
+
+#include "radiometry/mesh/ElementTree.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/Scene.h"
+#include "radiometry/units/Quantity.h"
+
+namespace radiant::app {
+
+/// Per surface, the area-weighted mean radiosity (W/m^2 per band).
+std::vector<Rgb> surfaceMeans(const Scene& scene, const PatchMesh& mesh, const std::vector<Rgb>& radiosity);
+
+/// The largest relative difference of a surface's mean radiosity, over surfaces and bands.
+double worstDeviation(const ElementTree& tree, const std::vector<Rgb>& reference, const Scene& scene);
+
+/// The Cornell box's surface means from Gauss-Seidel to residual 1e-9, on patches small enough that
+/// their own meshing error stays below the hierarchical solver's (coarser under --quick).
+struct GaussSeidelReference {
+    double patchArea = 0;           ///< m^2
+    std::vector<Rgb> surfaceMeans;  ///< W/m^2 per band, one per surface of makeCornellBox()
+};
+/// Solved once per process and per `quick`: the fine one takes seconds and several tables compare with it.
+const GaussSeidelReference& cornellGaussSeidelReference(bool quick);
+
+/// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
+/// worst relative difference over the leaves.
+struct FurnaceError {
+    double rms = 0, worst = 0;
+};
+/// The furnace solved to residual 1e-6 with hierarchicalSetupForElements(furnace, elements), its
+/// linkEpsilon multiplied by `linkEpsilonScale`.
+FurnaceError furnaceError(std::size_t elements, double linkEpsilonScale = 1);
+
+} // namespace radiant::app
