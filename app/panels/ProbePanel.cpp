@@ -4,6 +4,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
 #include "radiometry/geometry/RayCaster.h"
 
@@ -107,6 +108,7 @@ void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
     // The gather casts rays to every patch the point sees: tens of milliseconds on a fine mesh, so
     // it runs on a worker that holds the snapshot (scene, mesh, radiosity) alive while it reads.
     job_ = std::async(std::launch::async, [snapshot, picker = picker_, at = *pick_, target = target_] {
+        yieldToTheDisplay();  // a fresh thread each time: background work, as the solver's
         Measured measured;
         measured.generation = snapshot->generation;
         const auto start = std::chrono::steady_clock::now();

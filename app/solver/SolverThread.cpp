@@ -1,17 +1,12 @@
 #include "app/solver/SolverThread.h"
 
-#include <pthread.h>
-#include <sched.h>
-#include <sys/resource.h>
-#include <sys/syscall.h>
-#include <unistd.h>
-
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
 #include <type_traits>
 
+#include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ImportanceSolver.h"
@@ -82,25 +77,6 @@ std::shared_ptr<const std::vector<glm::vec3>> linkSegments(const HierarchicalSol
         segments->push_back(glm::vec3(tree.polygon(link.source).centroid));
     }
     return segments;
-}
-
-/// On two cores the solver (its thread and the shared worker pool's helpers, which it starts and
-/// which inherit this) would take both from the threads that draw the window (the main thread and,
-/// on software GL, llvmpipe's rasterisers). SCHED_IDLE runs the solver only on cycles no other
-/// thread wants: a woken drawing thread preempts it at once, and with the window idle (or on a GPU,
-/// waiting for the swap) the solver still has every core. Measured on llvmpipe, 20k patches, 1600 x
-/// 1000 (bench frames): running p99 41-44 ms at nice +10, 31-35 ms at SCHED_IDLE. The cost: while
-/// other processes keep the cores busy the solver waits for them, so RADIANT_SOLVER_NICE=n (the
-/// tests set it: under ctest -j other test processes are not idle time) asks for nice n instead.
-/// Linux's policy and nice value are per thread.
-void yieldToTheDisplay() {
-    const auto thread = static_cast<id_t>(syscall(SYS_gettid));
-    if (const char* nice = std::getenv("RADIANT_SOLVER_NICE")) {
-        setpriority(PRIO_PROCESS, thread, std::atoi(nice));
-        return;
-    }
-    const sched_param idle{};  // SCHED_IDLE takes priority 0
-    if (pthread_setschedparam(pthread_self(), SCHED_IDLE, &idle) != 0) setpriority(PRIO_PROCESS, thread, 19);
 }
 
 /// Index of the first patch whose radiosity is NaN or infinite, or npos.
