@@ -3,6 +3,7 @@
 #include <epoxy/gl.h>
 
 #include <cmath>
+#include <cstddef>
 #include <numbers>
 #include <optional>
 #include <vector>
@@ -21,20 +22,31 @@ namespace {
 constexpr int kRings = 16;      ///< from the zenith to the horizon (the picture is per pixel; these shape the outline)
 constexpr int kSegments = 64;   ///< around the normal
 
-/// Unit directions (local frame, z up) of the dome's triangles, wound counter-clockwise seen from outside.
-std::vector<glm::vec3> domeTriangles() {
+/// A corner of the dome: its unit direction (local frame, z up) and its spherical coordinates.
+/// The coordinates go with the vertex rather than being recovered per pixel: phi runs on to 2 pi at
+/// the last segment, so no triangle straddles atan's branch cut, and the fragment shader needs no
+/// acos or atan (two of each per pixel, twice over, were most of the dome's cost on software GL).
+struct DomeVertex {
+    glm::vec3 direction;
+    glm::vec2 thetaPhi;  ///< radians
+};
+
+/// The dome's triangles, wound counter-clockwise seen from outside.
+std::vector<DomeVertex> domeTriangles() {
     const auto at = [](int ring, int segment) {
         const double theta = std::numbers::pi / 2 * ring / kRings;
         const double phi = 2 * std::numbers::pi * segment / kSegments;
-        return glm::vec3(static_cast<float>(std::sin(theta) * std::cos(phi)),
-                         static_cast<float>(std::sin(theta) * std::sin(phi)), static_cast<float>(std::cos(theta)));
+        return DomeVertex{glm::vec3(static_cast<float>(std::sin(theta) * std::cos(phi)),
+                                    static_cast<float>(std::sin(theta) * std::sin(phi)),
+                                    static_cast<float>(std::cos(theta))),
+                          glm::vec2(static_cast<float>(theta), static_cast<float>(phi))};
     };
-    std::vector<glm::vec3> triangles;
+    std::vector<DomeVertex> triangles;
     triangles.reserve(static_cast<std::size_t>(kRings * kSegments * 6));
     for (int ring = 0; ring < kRings; ++ring)
         for (int segment = 0; segment < kSegments; ++segment) {
-            const glm::vec3 a = at(ring, segment), b = at(ring + 1, segment), c = at(ring + 1, segment + 1),
-                            d = at(ring, segment + 1);
+            const DomeVertex a = at(ring, segment), b = at(ring + 1, segment), c = at(ring + 1, segment + 1),
+                             d = at(ring, segment + 1);
             triangles.insert(triangles.end(), {a, b, c, a, c, d});
         }
     return triangles;
@@ -55,10 +67,11 @@ struct HemisphereOverlay::State {
 };
 
 HemisphereOverlay::HemisphereOverlay() : state_(std::make_unique<State>()) {
-    const std::vector<glm::vec3> triangles = domeTriangles();
-    state_->vertices.setData(std::span<const glm::vec3>(triangles));
+    const std::vector<DomeVertex> triangles = domeTriangles();
+    state_->vertices.setData(std::span<const DomeVertex>(triangles));
     state_->vertexCount = static_cast<GLsizei>(triangles.size());
-    state_->layout.addFloatAttribute(state_->vertices, 0, 3, sizeof(glm::vec3), 0);
+    state_->layout.addFloatAttribute(state_->vertices, 0, 3, sizeof(DomeVertex), offsetof(DomeVertex, direction));
+    state_->layout.addFloatAttribute(state_->vertices, 1, 2, sizeof(DomeVertex), offsetof(DomeVertex, thetaPhi));
     glBindVertexArray(0);
 }
 
@@ -94,6 +107,7 @@ void HemisphereOverlay::draw(const Camera& camera, double aspect) const {
     s.program.set("imageRight", glm::vec3(s.imageRight, 0.0f));
     s.program.set("imageUp", glm::vec3(s.imageUp, 0.0f));
     s.program.set("imageSize", static_cast<float>(s.imageSize));
+    s.program.set("phiOfImageRight", static_cast<float>(std::atan2(s.imageRight.y, s.imageRight.x)));
     s.program.set("grid", s.style.grid ? 1 : 0);
     s.sky.bind(0);
     s.program.set("sky", 0);
