@@ -43,13 +43,21 @@ void HemicubeSession::update() {
         lastRenderSeconds_ = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         ++captureVersion_;
     }
-    const std::span<const Rgb> radiosity = snapshot_->radiosity.size() == snapshot_->mesh->size()
-                                               ? std::span<const Rgb>(snapshot_->radiosity)
-                                               : std::span<const Rgb>();
-    gathered_ = gatherHemicube(capture_->layout, capture_->items, *snapshot_->mesh, snapshot_->scene->surfaces.size(),
-                               radiosity);
+    gatherStale_ = true;
     capturedGeneration_ = snapshot_->generation;
     ++version_;
+}
+
+const HemicubeGatherResult& HemicubeSession::gathered() const {
+    if (gatherStale_ && capture_ && snapshot_) {
+        const std::span<const Rgb> radiosity = snapshot_->radiosity.size() == snapshot_->mesh->size()
+                                                   ? std::span<const Rgb>(snapshot_->radiosity)
+                                                   : std::span<const Rgb>();
+        gathered_ = gatherHemicube(capture_->layout, capture_->items, *snapshot_->mesh,
+                                   snapshot_->scene->surfaces.size(), radiosity);
+        gatherStale_ = false;
+    }
+    return gathered_;
 }
 
 Rgb HemicubeSession::radianceToward(const glm::dvec3& localDirection) const {
