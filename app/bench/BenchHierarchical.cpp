@@ -25,11 +25,6 @@ struct Target {
     double seconds;  ///< issue #5: wall time to residual 1e-3, set-up included
 };
 
-std::string verdict(double seconds, double target) {
-    if (seconds <= target) return "met";
-    return "missed by " + formatNumber(seconds - target) + " s (" + formatNumber(seconds / target) + "x)";
-}
-
 } // namespace
 
 BenchTable benchHierarchical(const BenchOptions& options) {
@@ -86,7 +81,7 @@ BenchTable benchHierarchical(const BenchOptions& options) {
                               formatNumber(lastRaysPerLink, 2), std::to_string(steps), formatNumber(wall),
                               formatNumber(cpu), formatNumber(lastCpuPerLink, 2),
                               target.seconds > 0 ? formatNumber(target.seconds) : "-",
-                              target.seconds > 0 ? verdict(wall, target.seconds) : "-",
+                              target.seconds > 0 ? timeVerdict(wall, target.seconds) : "-",
                               formatNumber(100 * worstDeviation(solver.elements(), referenceMeans, scene), 2) + "%",
                               formatNumber(100 * furnace.rms, 2) + "%", formatNumber(100 * furnace.worst, 2) + "%"});
     }

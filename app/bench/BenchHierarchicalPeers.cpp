@@ -64,11 +64,6 @@ Run solveCornell(const Scene& scene, const PatchMesh& mesh, std::size_t elements
     return run;
 }
 
-std::string verdict(double seconds, double target) {
-    if (seconds <= target) return "met";
-    return "missed by " + formatNumber(seconds - target) + " s (" + formatNumber(seconds / target) + "x)";
-}
-
 std::string thousands(std::size_t count) {
     if (count >= 1'000'000) return formatNumber(static_cast<double>(count) / 1e6, 3) + "M";
     if (count >= 1'000) return formatNumber(static_cast<double>(count) / 1e3, 3) + "k";
@@ -194,7 +189,7 @@ BenchTable benchHierarchicalPeers(const BenchOptions& options) {
         std::string ratio = formatNumber(peer.fastestSeconds / matched.wall, 2);
         if (peer.slowestSeconds > peer.fastestSeconds) ratio += "-" + formatNumber(peer.slowestSeconds / matched.wall, 2);
         table.rows.push_back(row(peer.name, peer.figure, matched, search.scale, defaultEpsilon, formatNumber(target),
-                                 verdict(matched.wall, target) + (search.reached ? "" : " (fewer links than the peer)"),
+                                 timeVerdict(matched.wall, target) + (search.reached ? "" : " (fewer links than the peer)"),
                                  ratio + "x", furnaceError(peer.elements, search.scale)));
         defaultRows.push_back(row("Radiant at its own default refinement",
                                   thousands(peer.elements) + " elements asked, as " + peer.name, atDefault, 1,

@@ -49,4 +49,9 @@ std::string formatNumber(double value, int significantDigits) {
     return out.str();
 }
 
+std::string timeVerdict(double seconds, double targetSeconds) {
+    if (seconds <= targetSeconds) return "met";
+    return "missed by " + formatNumber(seconds - targetSeconds) + " s (" + formatNumber(seconds / targetSeconds) + "x)";
+}
+
 } // namespace radiant::app

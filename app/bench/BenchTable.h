@@ -23,6 +23,8 @@ struct BenchTable {
 double median(std::vector<double> samples);
 /// "12.3" with a fixed number of significant digits.
 std::string formatNumber(double value, int significantDigits = 3);
+/// "met" when `seconds` is within `targetSeconds`, else by how much and how many times it is missed.
+std::string timeVerdict(double seconds, double targetSeconds);
 
 // One function per table; each lives in its own file under app/bench/.
 BenchTable benchScenes(const BenchOptions& options);       ///< loading and meshing
