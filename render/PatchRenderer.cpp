@@ -118,6 +118,11 @@ struct PatchRenderer::State {
     gl::VertexArray gridLayout;
     GLsizei gridVertexCount = 0;
     std::vector<std::int64_t> patchGrid;  // per patch: its grid, or -1
+    std::vector<std::uint32_t> patchCell; // per grid patch: its cell in the grid, row-major
+    // The shooter's cell as a quad of its own: its outline redraws those pixels, not its whole face.
+    gl::Buffer outlineCell;
+    gl::VertexArray outlineLayout;
+    std::int64_t outlineCellOf = -1;  // the patch outlineCell holds
     // Colours as shown: 8 bits per channel, what the framebuffer keeps, except in false colour, whose
     // isolines read the interpolated colour-map position (alpha) to a fraction of a legend step.
     // llvmpipe samples 8-bit texels faster: the tone-mapped view, A/B in one session, 10-13% less
@@ -129,7 +134,9 @@ struct PatchRenderer::State {
     ColourAtlases displayAtlases;  // RGBA8
     ColourAtlases preciseAtlases;  // RGBA16F, for false colour
     bool preciseShown = false;     // which pair fillAtlases filled last
-    gl::Texture2D tintAtlas{1, 1, GL_RGBA16F};    // tints, fetched per cell
+    // Tints, fetched per cell: 8 bits, alpha = amount / 2, + 1/2 when outlined (the amount is at most
+    // 0.8: importance, changed and shooter tints combined).
+    gl::Texture2D tintAtlas{1, 1, GL_RGBA8};
     gl::Buffer links;
     gl::VertexArray linkLayout;
     GLsizei linkVertexCount = 0;
@@ -177,6 +184,9 @@ struct PatchRenderer::State {
 
     /// The grid faces' quads and atlases, after `grids` was found.
     void uploadGrids();
+    /// Cell `cell` of grid `g` as a quad: corners on the face's bilinear map, grid coordinates as
+    /// the face's quad gives them there.
+    void uploadOutlineCell(std::size_t g, std::uint32_t cell);
     /// Writes the grid faces' texels from vertexColours or patchColours (as shown) and tints, into the
     /// 8-bit colour atlases, or the 16-bit ones when `precise` (false colour).
     void fillAtlases(bool smooth, bool precise);
@@ -191,11 +201,16 @@ struct PatchRenderer::State {
 
 void PatchRenderer::State::uploadGrids() {
     patchGrid.assign(patchSurface.size(), -1);
+    patchCell.assign(patchSurface.size(), 0);
+    outlineCellOf = -1;
     std::vector<GridVertex> quads;
     quads.reserve(grids.grids.size() * 6);
     for (std::size_t g = 0; g < grids.grids.size(); ++g) {
         const FaceGrid& grid = grids.grids[g];
-        for (const std::uint32_t p : grid.cellPatch) patchGrid[p] = static_cast<std::int64_t>(g);
+        for (std::size_t cell = 0; cell < grid.cellPatch.size(); ++cell) {
+            patchGrid[grid.cellPatch[cell]] = static_cast<std::int64_t>(g);
+            patchCell[grid.cellPatch[cell]] = static_cast<std::uint32_t>(cell);
+        }
         const auto columns = static_cast<float>(grid.columns), rows = static_cast<float>(grid.rows);
         const glm::vec3 atlasLayout(static_cast<float>(grid.atlasRow), columns, rows);
         const std::array<glm::vec2, 4> at{glm::vec2(0, 0), glm::vec2(columns, 0), glm::vec2(columns, rows),
@@ -210,7 +225,7 @@ void PatchRenderer::State::uploadGrids() {
     const auto width = static_cast<int>(grids.atlasWidth), height = static_cast<int>(grids.atlasHeight);
     displayAtlases = {gl::Texture2D(width, height, GL_RGBA8), gl::Texture2D(width, height, GL_RGBA8)};
     preciseAtlases = {gl::Texture2D(width, height, GL_RGBA16F), gl::Texture2D(width, height, GL_RGBA16F)};
-    tintAtlas = gl::Texture2D(width, height, GL_RGBA16F);
+    tintAtlas = gl::Texture2D(width, height, GL_RGBA8);
 }
 
 double PatchRenderer::State::dataMax() {
@@ -238,6 +253,26 @@ double PatchRenderer::State::dataMax() {
     return dataMaxW_m2;
 }
 
+void PatchRenderer::State::uploadOutlineCell(std::size_t g, std::uint32_t cell) {
+    const FaceGrid& grid = grids.grids[g];
+    const std::uint32_t i = cell % grid.columns, j = cell / grid.columns;
+    const auto at = [&](std::uint32_t column, std::uint32_t row) {
+        const double u = static_cast<double>(column) / grid.columns, v = static_cast<double>(row) / grid.rows;
+        const std::array<glm::dvec3, 4>& c = grid.corners;
+        const glm::dvec3 position = c[0] + (c[1] - c[0]) * u + (c[3] - c[0]) * v + (c[0] - c[1] + c[2] - c[3]) * (u * v);
+        return GridVertex{glm::vec3(position), glm::vec3(grid.normal),
+                          glm::vec2(static_cast<float>(column), static_cast<float>(row)),
+                          glm::vec3(static_cast<float>(grid.atlasRow), static_cast<float>(grid.columns),
+                                    static_cast<float>(grid.rows))};
+    };
+    const std::array<GridVertex, 4> corners{at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)};
+    std::array<GridVertex, 6> quad{};
+    std::size_t k = 0;
+    for (const int corner : {0, 1, 2, 0, 2, 3}) quad[k++] = corners[static_cast<std::size_t>(corner)];
+    outlineCell.setData(std::span<const GridVertex>(quad), GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+}
+
 void PatchRenderer::State::fillAtlases(bool smooth, bool precise) {
     if (grids.grids.empty()) return;
     const std::size_t width = grids.atlasWidth;
@@ -249,7 +284,9 @@ void PatchRenderer::State::fillAtlases(bool smooth, bool precise) {
         for (std::size_t j = 0; j < m; ++j)
             for (std::size_t i = 0; i < n; ++i) {
                 const std::uint32_t patch = grid.cellPatch[j * n + i];
-                tintTexels[(row + j) * width + i] = tints[patch];
+                const glm::vec4& tint = tints[patch];
+                const bool outlined = tint.w >= 2.0f;
+                tintTexels[(row + j) * width + i] = {glm::vec3(tint), outlined ? 0.5f + (tint.w - 2.0f) / 2.0f : tint.w / 2.0f};
                 if (!smooth) colourTexels[(row + j) * width + i] = patchColours[patch];
             }
         if (smooth)
@@ -283,6 +320,10 @@ PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     state_->gridLayout.addFloatAttribute(state_->gridVertices, 2, 3, gridStride, offsetof(GridVertex, normal));
     state_->gridLayout.addFloatAttribute(state_->gridVertices, 5, 2, gridStride, offsetof(GridVertex, grid));
     state_->gridLayout.addFloatAttribute(state_->gridVertices, 6, 3, gridStride, offsetof(GridVertex, layout));
+    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 0, 3, gridStride, offsetof(GridVertex, position));
+    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 2, 3, gridStride, offsetof(GridVertex, normal));
+    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 5, 2, gridStride, offsetof(GridVertex, grid));
+    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 6, 3, gridStride, offsetof(GridVertex, layout));
     state_->linkLayout.addFloatAttribute(state_->links, 0, 3, sizeof(glm::vec3), 0);
     glBindVertexArray(0);
     state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
@@ -656,9 +697,16 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glDepthFunc(GL_LEQUAL);  // the same triangles at the same depth
         const auto shooter = static_cast<std::size_t>(s.shooter);
         if (const std::int64_t grid = s.patchGrid[shooter]; grid >= 0) {
-            useProgram(colourVariant | 4u | gridVariant | 32u);  // the shooter's whole face: the outline is per cell
-            s.gridLayout.bind();
-            glDrawArrays(GL_TRIANGLES, static_cast<GLint>(grid * 6), 6);
+            if (s.outlineCellOf != s.shooter) {
+                s.uploadOutlineCell(static_cast<std::size_t>(grid), s.patchCell[shooter]);
+                s.outlineCellOf = s.shooter;
+            }
+            // Not pushed back as the faces were: the cell's own triangles need not match the face's
+            // depth to the last bit, and the outline must win.
+            glDisable(GL_POLYGON_OFFSET_FILL);
+            useProgram(colourVariant | 4u | gridVariant | 32u);
+            s.outlineLayout.bind();
+            glDrawArrays(GL_TRIANGLES, 0, 6);
         } else {
             useProgram(colourVariant | 4u);
             s.layout.bind();

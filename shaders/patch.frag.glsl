@@ -65,8 +65,9 @@ void main() {
 #else
     vec4 tintAndOutline = vec4(0.0);  // no patch is tinted or outlined
 #endif
-    int outlined = tintAndOutline.a >= 2.0 ? 1 : 0;
-    vec4 tint = vec4(tintAndOutline.rgb, tintAndOutline.a - 2.0 * float(outlined));
+    // 8-bit texels: alpha = amount / 2, + 1/2 when outlined (PatchRenderer's tint atlas).
+    int outlined = tintAndOutline.a >= 0.5 ? 1 : 0;
+    vec4 tint = vec4(tintAndOutline.rgb, 2.0 * (tintAndOutline.a - 0.5 * float(outlined)));
 #endif
 #ifdef FALSE_COLOUR
     vec3 colour = viridis(legendT);
