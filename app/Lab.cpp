@@ -170,6 +170,7 @@ struct Lab::State {
         }
         patches->setRadiosity(s.radiosity, s.generation, s.stats.shooter);
         patches->setLinks(s.linkSegments);
+        patches->setFocusLinks(s.focusLinkSegments);
         patches->setImportance(s.importance);
         if (s.scene->name != sceneShown) {
             if (!sceneShown.empty()) orbit = homeCamera(*s.scene);
@@ -229,6 +230,22 @@ struct Lab::State {
         return probePanel->pick(ray.origin, ray.direction);
     }
 
+    /// Tells the solver thread where the probe stands whenever the pick changes, so the snapshots
+    /// single out the hierarchical links that point gathers through.
+    void followPick() {
+        const std::optional<ProbePick>& pick = probePanel->picked();
+        std::optional<command::FocusedPoint> focus;
+        if (pick) focus = command::FocusedPoint{pick->surface, pick->face, pick->point, pick->meshGeneration};
+        const auto same = [](const std::optional<command::FocusedPoint>& a, const std::optional<command::FocusedPoint>& b) {
+            if (!a || !b) return a.has_value() == b.has_value();
+            return a->surface == b->surface && a->face == b->face && a->point == b->point &&
+                   a->meshGeneration == b->meshGeneration;
+        };
+        if (same(focus, focusSent)) return;
+        live.send(command::FocusPoint{focus});
+        focusSent = focus;
+    }
+
     void frame(render::ImageRgb8* capture) {
         const double now = glfwGetTime();
         if (lastFrameTime) frames.add(now - *lastFrameTime);
@@ -253,6 +270,7 @@ struct Lab::State {
         lastCamera = orbit.camera();
         if (const std::optional<glm::dvec2> click = controller.click())
             pickAt(*click * static_cast<double>(pixelRatio));
+        followPick();
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
 
         render::beginWindowFrame(width, height, viewport, kBackground);
@@ -303,6 +321,7 @@ struct Lab::State {
     render::Viewport viewport;
     render::Camera lastCamera;
     bool screenshotRequested = false;
+    std::optional<command::FocusedPoint> focusSent;
     std::string message;
     std::uint64_t frameCount = 0;
 };

@@ -140,6 +140,10 @@ struct PatchRenderer::State {
     gl::Buffer links;
     gl::VertexArray linkLayout;
     GLsizei linkVertexCount = 0;
+    gl::Buffer focusLinks;
+    gl::VertexArray focusLinkLayout;
+    GLsizei focusLinkVertexCount = 0;
+    std::shared_ptr<const std::vector<glm::vec3>> focusLinksShown;
 
     DisplaySettings settings;
     bool haveMesh = false;
@@ -325,6 +329,7 @@ PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     state_->outlineLayout.addFloatAttribute(state_->outlineCell, 5, 2, gridStride, offsetof(GridVertex, grid));
     state_->outlineLayout.addFloatAttribute(state_->outlineCell, 6, 3, gridStride, offsetof(GridVertex, layout));
     state_->linkLayout.addFloatAttribute(state_->links, 0, 3, sizeof(glm::vec3), 0);
+    state_->focusLinkLayout.addFloatAttribute(state_->focusLinks, 0, 3, sizeof(glm::vec3), 0);
     glBindVertexArray(0);
     state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
 }
@@ -405,6 +410,8 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.dataMaxW_m2 = 1.0;
     s.dataMaxStale = false;
     s.linkVertexCount = 0;
+    s.focusLinksShown.reset();
+    s.focusLinkVertexCount = 0;
     setMaterials(scene);
 }
 
@@ -526,6 +533,16 @@ void PatchRenderer::setLinks(std::shared_ptr<const std::vector<glm::vec3>> segme
     s.links.setData(ends, GL_DYNAMIC_DRAW);
     glBindBuffer(GL_ARRAY_BUFFER, 0);
     s.linkVertexCount = static_cast<GLsizei>(ends.size() & ~std::size_t{1});
+}
+
+void PatchRenderer::setFocusLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds) {
+    State& s = *state_;
+    if (segmentEnds == s.focusLinksShown) return;
+    s.focusLinksShown = segmentEnds;
+    const std::span<const glm::vec3> ends = segmentEnds ? std::span<const glm::vec3>(*segmentEnds) : std::span<const glm::vec3>();
+    s.focusLinks.setData(ends, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, 0);
+    s.focusLinkVertexCount = static_cast<GLsizei>(ends.size() & ~std::size_t{1});
 }
 
 void PatchRenderer::setSettings(const DisplaySettings& settings) {
@@ -722,10 +739,20 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         s.lineProgram.use();
         s.lineProgram.set("viewProjection", viewProjection);
-        // Faint: thousands of links overlap, and the shading under them must stay readable.
-        s.lineProgram.set("colour", glm::vec4(1.0f, 0.9f, 0.45f, 0.12f));
+        // Faint: thousands of links overlap, and the shading under them must stay readable; fainter
+        // still beside a picked point's own links, drawn bright on top (the lines to what it gathers
+        // from, at every level above it).
+        const bool focused = s.focusLinkVertexCount > 0;
+        s.lineProgram.set("colour", glm::vec4(1.0f, 0.9f, 0.45f, focused ? 0.05f : 0.12f));
         s.linkLayout.bind();
         glDrawArrays(GL_LINES, 0, s.linkVertexCount);
+        if (focused) {
+            glDisable(GL_DEPTH_TEST);  // all of them, also where they pass behind a block
+            s.lineProgram.set("colour", glm::vec4(0.3f, 0.95f, 1.0f, 0.85f));
+            s.focusLinkLayout.bind();
+            glDrawArrays(GL_LINES, 0, s.focusLinkVertexCount);
+            glEnable(GL_DEPTH_TEST);
+        }
         glDisable(GL_BLEND);
     }
     glBindVertexArray(0);

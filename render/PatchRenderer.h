@@ -48,6 +48,9 @@ public:
     /// Line segments (pairs of ends, metres) drawn when settings().showLinks: the hierarchical
     /// links. Null clears them; uploaded only when the pointer differs from the last call's.
     void setLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds);
+    /// The links a picked point gathers through, drawn bright over the others when links are shown
+    /// (the others fade further). Null clears them; uploaded only when the pointer changes.
+    void setFocusLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds);
 
     void setSettings(const DisplaySettings& settings);
     [[nodiscard]] const DisplaySettings& settings() const;

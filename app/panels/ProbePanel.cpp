@@ -59,7 +59,7 @@ bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     if (!hit) return false;
     // A face seen from behind is probed on its back: the detector faces the viewer.
     const glm::dvec3 normal = glm::dot(hit->normal, direction) > 0 ? -hit->normal : hit->normal;
-    pick_ = ProbePick{hit->point, normal, hit->surface, snapshot->meshGeneration};
+    pick_ = ProbePick{hit->point, normal, hit->surface, hit->face, snapshot->meshGeneration};
     reading_.reset();
     error_.clear();
     dirty_ = true;
@@ -154,6 +154,13 @@ void ProbePanel::draw() {
     if (reading_)
         ImGui::TextDisabled("at solver iteration %zu, gathered in %.0f ms", snapshot.stats.iteration,
                             measureSeconds_ * 1e3);
+    if (pick_ && snapshot.focusLinkSegments) {
+        // Hierarchical radiosity: the point's irradiance is what its element and each ancestor
+        // gathered over their own links, pushed down.
+        ImGui::Spacing();
+        ImGui::TextWrapped("Gathers over %zu links on %zu levels of the element tree (Display: Links shows them)",
+                           snapshot.focusLinkSegments->size() / 2, snapshot.focusLevels);
+    }
 }
 
 void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {

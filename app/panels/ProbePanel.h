@@ -27,6 +27,7 @@ struct ProbePick {
     glm::dvec3 point{0.0};       ///< metres
     glm::dvec3 normal{0, 0, 1};  ///< unit, the face's front side
     std::uint32_t surface = 0;
+    std::uint32_t face = 0;  ///< within the surface
     std::uint64_t meshGeneration = 0;
 };
 

@@ -46,6 +46,12 @@ struct Snapshot {
     /// two elements it joins (pairs of ends, m). Shared by successive snapshots while the links
     /// stay the same (refinement is what changes them); null for the other methods.
     std::shared_ptr<const std::vector<glm::vec3>> linkSegments;
+    /// Hierarchical and importance methods, with a focused point (command::FocusPoint) on this mesh:
+    /// the links it gathers through, those of the element under it and of each ancestor, as segments
+    /// from the point to each link's source centroid, and over how many levels of the element tree
+    /// they stand. Null / 0 otherwise.
+    std::shared_ptr<const std::vector<glm::vec3>> focusLinkSegments;
+    std::size_t focusLevels = 0;
     /// Importance method: per-patch importance Y (1/m^2), indexed like the mesh's patches; null
     /// for the other methods.
     std::shared_ptr<const std::vector<double>> importance;

@@ -2,8 +2,12 @@
 // The commands the UI sends to the solver thread. Each is a plain value; the worker applies them in
 // order.
 #include <cstddef>
+#include <cstdint>
 #include <memory>
+#include <optional>
 #include <variant>
+
+#include <glm/vec3.hpp>
 
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
@@ -31,6 +35,17 @@ struct SetTolerance {
 struct Remesh {
     MeshingOptions meshing;
 };
+/// A point on the scene (the probe's pick) whose hierarchical links the snapshots single out: the
+/// links of the element under it and of every ancestor, all of which it gathers through push-pull.
+struct FocusedPoint {
+    std::uint32_t surface = 0;
+    std::uint32_t face = 0;  ///< within the surface
+    glm::dvec3 point{0.0};   ///< m, on the face
+    std::uint64_t meshGeneration = 0;  ///< the mesh it was picked on; another mesh ignores it
+};
+struct FocusPoint {
+    std::optional<FocusedPoint> at;  ///< nullopt: none
+};
 /// Replaces the scene (already loaded and checked by the caller) and meshes it.
 struct LoadScene {
     std::shared_ptr<const Scene> scene;
@@ -41,5 +56,6 @@ struct LoadScene {
 
 namespace radiant::app {
 using SolverCommand = std::variant<command::Run, command::Pause, command::Step, command::Reset, command::SetMethod,
-                                   command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene>;
+                                   command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene,
+                                   command::FocusPoint>;
 }

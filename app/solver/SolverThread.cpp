@@ -1,9 +1,11 @@
 #include "app/solver/SolverThread.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <optional>
+#include <tuple>
 #include <type_traits>
 
 #include "app/solver/ThreadPriority.h"
@@ -51,6 +53,10 @@ struct SolverThread::State {
     const Solver* linkSolver = nullptr;
     std::size_t linkCount = 0;
     bool linksStale = true;
+    std::optional<command::FocusedPoint> focus;
+    std::shared_ptr<const std::vector<glm::vec3>> focusSegments;  ///< rebuilt with the links or the focus
+    std::size_t focusLevels = 0;
+    bool focusStale = true;
 };
 
 namespace {
@@ -77,6 +83,29 @@ std::shared_ptr<const std::vector<glm::vec3>> linkSegments(const HierarchicalSol
         segments->push_back(glm::vec3(tree.polygon(link.source).centroid));
     }
     return segments;
+}
+
+/// The links a point gathers through: those of the deepest element containing it and of each of its
+/// ancestors (push-pull hands every ancestor's gathered irradiance down to it), as segments from the
+/// point to each link's source, with the number of tree levels that hold at least one of them.
+std::pair<std::shared_ptr<const std::vector<glm::vec3>>, std::size_t> focusLinkSegments(
+    const HierarchicalSolver& solver, const command::FocusedPoint& at) {
+    const ElementTree& tree = solver.elements();
+    const ElementIndex deepest = tree.locate(at.surface, at.face, at.point);
+    if (deepest == kNoElement) return {nullptr, 0};
+    std::vector<char> onChain(tree.size(), 0);
+    for (ElementIndex e = deepest; e != kNoElement; e = tree.parent(e)) onChain[e] = 1;
+    std::vector<bool> linkedAtDepth(tree.depth(deepest) + 1, false);
+    auto segments = std::make_shared<std::vector<glm::vec3>>();
+    for (const Link& link : solver.links()) {
+        if (!onChain[link.receiver]) continue;
+        // From the point itself: whatever the level, it receives that link's light (push-pull).
+        segments->push_back(glm::vec3(at.point));
+        segments->push_back(glm::vec3(tree.polygon(link.source).centroid));
+        linkedAtDepth[tree.depth(link.receiver)] = true;
+    }
+    return {std::move(segments),
+            static_cast<std::size_t>(std::count(linkedAtDepth.begin(), linkedAtDepth.end(), true))};
 }
 
 /// Index of the first patch whose radiosity is NaN or infinite, or npos.
@@ -222,6 +251,9 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.pendingSteps = 0;
                 state.history.clear();
                 if (state.solver) state.solver->reset();
+            } else if constexpr (std::is_same_v<C, command::FocusPoint>) {
+                state.focus = c.at;
+                state.focusStale = true;
             } else if constexpr (std::is_same_v<C, command::SetTolerance>) {
                 if (!(c.tolerance > 0)) throw RadiantError({"", "tolerance"}, "must be positive, got " + std::to_string(c.tolerance));
                 state.tolerance = c.tolerance;
@@ -303,6 +335,8 @@ void SolverThread::publishOverlays(State& state, Snapshot& s) {
     if (!hierarchical) {
         state.linkSegments.reset();
         state.linkSolver = nullptr;
+        state.focusSegments.reset();
+        state.focusStale = true;
         return;
     }
     if (state.linksStale || state.linkSolver != hierarchical || state.linkCount != hierarchical->links().size()) {
@@ -310,8 +344,18 @@ void SolverThread::publishOverlays(State& state, Snapshot& s) {
         state.linkSolver = hierarchical;
         state.linkCount = hierarchical->links().size();
         state.linksStale = false;
+        state.focusStale = true;
     }
     s.linkSegments = state.linkSegments;
+    if (state.focusStale) {
+        state.focusSegments.reset();
+        state.focusLevels = 0;
+        if (state.focus && state.focus->meshGeneration == state.meshGeneration)
+            std::tie(state.focusSegments, state.focusLevels) = focusLinkSegments(*hierarchical, *state.focus);
+        state.focusStale = false;
+    }
+    s.focusLinkSegments = state.focusSegments;
+    s.focusLevels = state.focusLevels;
     if (const auto* importance = dynamic_cast<const ImportanceSolver*>(hierarchical);
         importance && importance->importance().size() == s.radiosity.size())
         s.importance = std::make_shared<const std::vector<double>>(importance->importance());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <functional>
 #include <memory>
 #include <string>
@@ -19,6 +20,7 @@
 #include "app/Lab.h"
 #include "app/solver/SolverThread.h"
 #include "radiometry/units/Quantity.h"
+#include "render/Screenshot.h"
 #include "render/camera/Camera.h"
 
 using namespace radiant;
@@ -260,3 +262,37 @@ TEST_CASE("keyboard shortcuts drive the solve and the display") {
 }
 
 } // TEST_SUITE
+
+TEST_CASE("a click with hierarchical radiosity singles out the links the point gathers through") {
+    requireDisplay();
+    LabOptions options = coarseCornell();
+    options.maxPatchArea = 0.01;
+    options.showPanels = true;
+    options.width = 1600;
+    options.height = 1000;
+    Lab lab(options);
+    lab.send(command::SetMethod{SolverMethod::Hierarchical});
+    lab.send(command::Step{6});
+    frameUntil(lab, [](const app::Snapshot& s) { return s.linkSegments && s.stats.iteration >= 6 && !s.running; });
+    CHECK_FALSE(lab.snapshot()->focusLinkSegments);  // nothing picked yet
+    lab.display().showLinks = true;
+
+    const glm::dvec3 floorPoint{0.42, 0.0, 0.12};  // in front of the tall block
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
+    REQUIRE(lab.clickAt({pixel.x, pixel.y}));
+    frameUntil(lab, [](const app::Snapshot& s) { return s.focusLinkSegments && !s.focusLinkSegments->empty(); }, 30);
+    const app::Snapshot& focused = *lab.snapshot();
+    CHECK(focused.focusLevels >= 1);
+    // Every one starts at the picked point, on the floor.
+    for (std::size_t i = 0; i < focused.focusLinkSegments->size(); i += 2) {
+        const glm::vec3 from = (*focused.focusLinkSegments)[i];
+        CHECK(std::abs(from.y) < 1e-5f);
+        CHECK(from.x == doctest::Approx(floorPoint.x).epsilon(1e-3));
+        CHECK(from.z == doctest::Approx(floorPoint.z).epsilon(1e-3));
+    }
+    if (const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR")) {
+        lab.focusPanel("Probe");
+        for (int i = 0; i < 30; ++i) lab.frame();  // the probe's reading arrives
+        render::writePng(lab.frameAndCapture(), std::filesystem::path(directory) / "display-focus-links.png");
+    }
+}

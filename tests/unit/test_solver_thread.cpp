@@ -3,6 +3,8 @@
 #include <atomic>
 #include <chrono>
 #include <algorithm>
+#include <array>
+#include <set>
 #include <cmath>
 #include <cerrno>
 #include <cstdlib>
@@ -18,6 +20,7 @@
 #include "app/solver/LiveSolve.h"
 #include "app/solver/SolverThread.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
 #include "radiometry/scene/SceneLibrary.h"
 
 using namespace radiant;
@@ -222,6 +225,61 @@ TEST_CASE("hierarchical solvers publish their links as segments between the elem
     snapshot = thread.snapshot();
     CHECK_FALSE(snapshot->linkSegments);
     CHECK_FALSE(snapshot->importance);
+}
+
+TEST_CASE("a focused point gets the links of its element and each ancestor, all from elsewhere, other methods none") {
+    SolverThread solver;
+    auto box = std::make_shared<const Scene>(loadScene("cornell-box").scene);
+    solver.send(command::LoadScene{box, MeshingOptions{0.01}});
+    solver.send(command::SetMethod{SolverMethod::Hierarchical});
+    solver.send(command::Step{6});
+    solver.waitUntilIdle();
+    const std::shared_ptr<const Snapshot> unfocused = solver.snapshot();
+    REQUIRE(unfocused->linkSegments);
+    CHECK_FALSE(unfocused->focusLinkSegments);
+
+    // A floor point (the floor is y = 0), found as the probe finds it: by a ray.
+    const RayCaster rays(*box);
+    const std::optional<RayHit> hit = rays.intersect({0.45, 0.3, 0.1}, {0, -1, 0});
+    REQUIRE(hit);
+    REQUIRE(hit->point.y == doctest::Approx(0.0).epsilon(1e-6));
+    solver.send(command::FocusPoint{command::FocusedPoint{hit->surface, hit->face, hit->point, unfocused->meshGeneration}});
+    solver.waitUntilIdle();
+    const std::shared_ptr<const Snapshot> focused = solver.snapshot();
+    REQUIRE(focused->focusLinkSegments);
+    const std::vector<glm::vec3>& ends = *focused->focusLinkSegments;
+    CHECK(ends.size() % 2 == 0);
+    std::set<std::array<float, 3>> sources;  // of every link that a floor element receives
+    for (std::size_t i = 0; i + 1 < focused->linkSegments->size(); i += 2) {
+        const glm::vec3 receiver = (*focused->linkSegments)[i], source = (*focused->linkSegments)[i + 1];
+        if (std::abs(receiver.y) < 1e-5f) sources.insert({source.x, source.y, source.z});
+    }
+    for (std::size_t i = 0; i + 1 < ends.size(); i += 2) {
+        const glm::vec3 from = ends[i], source = ends[i + 1];
+        CAPTURE(i);
+        // From the point itself, to something it sees that a floor element gathers from.
+        CHECK(from == glm::vec3(hit->point));
+        CHECK(source.y > 1e-3f);
+        CHECK(sources.count({source.x, source.y, source.z}) == 1);
+    }
+    // The chain from the deepest element under the point to its root: a floor point by the blocks
+    // gathers over links at more than one level of it, each holding at least one link.
+    CHECK(focused->focusLevels >= 2);
+    CHECK(ends.size() / 2 >= focused->focusLevels);
+    const std::size_t focusedLinks = ends.size() / 2;
+    CHECK(focusedLinks < focused->linkSegments->size() / 2);  // a few of the box's links, not all
+
+    solver.send(command::FocusPoint{});
+    solver.waitUntilIdle();
+    CHECK_FALSE(solver.snapshot()->focusLinkSegments);
+    // A point picked on an older mesh is ignored.
+    solver.send(command::FocusPoint{command::FocusedPoint{hit->surface, hit->face, hit->point, unfocused->meshGeneration + 1}});
+    solver.waitUntilIdle();
+    CHECK_FALSE(solver.snapshot()->focusLinkSegments);
+    solver.send(command::FocusPoint{command::FocusedPoint{hit->surface, hit->face, hit->point, unfocused->meshGeneration}});
+    solver.send(command::SetMethod{SolverMethod::GaussSeidel});
+    solver.waitUntilIdle();
+    CHECK_FALSE(solver.snapshot()->focusLinkSegments);
 }
 
 TEST_CASE("the importance method publishes each patch's importance") {
