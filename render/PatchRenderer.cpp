@@ -137,13 +137,25 @@ struct PatchRenderer::State {
     // Tints, fetched per cell: 8 bits, alpha = amount / 2, + 1/2 when outlined (the amount is at most
     // 0.8: importance, changed and shooter tints combined).
     gl::Texture2D tintAtlas{1, 1, GL_RGBA8};
-    gl::Buffer links;
-    gl::VertexArray linkLayout;
-    GLsizei linkVertexCount = 0;
-    gl::Buffer focusLinks;
-    gl::VertexArray focusLinkLayout;
-    GLsizei focusLinkVertexCount = 0;
-    std::shared_ptr<const std::vector<glm::vec3>> focusLinksShown;
+    /// Line segments (pairs of ends) uploaded when their shared data changes.
+    struct Segments {
+        gl::Buffer buffer;
+        gl::VertexArray layout;
+        GLsizei vertexCount = 0;
+        std::shared_ptr<const std::vector<glm::vec3>> shown;
+
+        Segments() { layout.addFloatAttribute(buffer, 0, 3, sizeof(glm::vec3), 0); }
+        void set(std::shared_ptr<const std::vector<glm::vec3>> ends) {
+            if (ends == shown) return;
+            shown = std::move(ends);
+            const std::span<const glm::vec3> points = shown ? std::span<const glm::vec3>(*shown) : std::span<const glm::vec3>();
+            buffer.setData(points, GL_DYNAMIC_DRAW);
+            glBindBuffer(GL_ARRAY_BUFFER, 0);
+            vertexCount = static_cast<GLsizei>(points.size() & ~std::size_t{1});
+        }
+    };
+    Segments links;       // every hierarchical link
+    Segments focusLinks;  // those the picked point gathers through
 
     DisplaySettings settings;
     bool haveMesh = false;
@@ -165,7 +177,6 @@ struct PatchRenderer::State {
     std::vector<glm::vec3> baseColour;  // linear: reflectance, or an emitter's chromaticity
     std::vector<double> importance;     // relative to its maximum
     std::shared_ptr<const std::vector<double>> importanceShown;
-    std::shared_ptr<const std::vector<glm::vec3>> linksShown;
     std::size_t smoothingVertexCount = 0;
     std::vector<Rgb> radiosity;         // per patch, W/m^2
     std::vector<Rgb> smoothRadiosity;   // per smoothing vertex, W/m^2
@@ -328,8 +339,6 @@ PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     state_->outlineLayout.addFloatAttribute(state_->outlineCell, 2, 3, gridStride, offsetof(GridVertex, normal));
     state_->outlineLayout.addFloatAttribute(state_->outlineCell, 5, 2, gridStride, offsetof(GridVertex, grid));
     state_->outlineLayout.addFloatAttribute(state_->outlineCell, 6, 3, gridStride, offsetof(GridVertex, layout));
-    state_->linkLayout.addFloatAttribute(state_->links, 0, 3, sizeof(glm::vec3), 0);
-    state_->focusLinkLayout.addFloatAttribute(state_->focusLinks, 0, 3, sizeof(glm::vec3), 0);
     glBindVertexArray(0);
     state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
 }
@@ -404,14 +413,12 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.changed.assign(n, 0);
     s.importance.assign(n, 0.0);
     s.importanceShown.reset();
-    s.linksShown.reset();
+    s.links.set(nullptr);
+    s.focusLinks.set(nullptr);
     s.automaticKeyW_m2 = 1.0;
     s.heldKeyW_m2 = 0.0;
     s.dataMaxW_m2 = 1.0;
     s.dataMaxStale = false;
-    s.linkVertexCount = 0;
-    s.focusLinksShown.reset();
-    s.focusLinkVertexCount = 0;
     setMaterials(scene);
 }
 
@@ -526,23 +533,11 @@ void PatchRenderer::setImportance(std::shared_ptr<const std::vector<double>> imp
 }
 
 void PatchRenderer::setLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds) {
-    State& s = *state_;
-    if (segmentEnds == s.linksShown) return;
-    s.linksShown = segmentEnds;
-    const std::span<const glm::vec3> ends = segmentEnds ? std::span<const glm::vec3>(*segmentEnds) : std::span<const glm::vec3>();
-    s.links.setData(ends, GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    s.linkVertexCount = static_cast<GLsizei>(ends.size() & ~std::size_t{1});
+    state_->links.set(std::move(segmentEnds));
 }
 
 void PatchRenderer::setFocusLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds) {
-    State& s = *state_;
-    if (segmentEnds == s.focusLinksShown) return;
-    s.focusLinksShown = segmentEnds;
-    const std::span<const glm::vec3> ends = segmentEnds ? std::span<const glm::vec3>(*segmentEnds) : std::span<const glm::vec3>();
-    s.focusLinks.setData(ends, GL_DYNAMIC_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, 0);
-    s.focusLinkVertexCount = static_cast<GLsizei>(ends.size() & ~std::size_t{1});
+    state_->focusLinks.set(std::move(segmentEnds));
 }
 
 void PatchRenderer::setSettings(const DisplaySettings& settings) {
@@ -734,7 +729,7 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     }
     glDisable(GL_POLYGON_OFFSET_FILL);
 
-    if (d.showLinks && s.linkVertexCount > 0) {
+    if (d.showLinks && s.links.vertexCount > 0) {
         glEnable(GL_BLEND);
         glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
         s.lineProgram.use();
@@ -742,15 +737,15 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
         // Faint: thousands of links overlap, and the shading under them must stay readable; fainter
         // still beside a picked point's own links, drawn bright on top (the lines to what it gathers
         // from, at every level above it).
-        const bool focused = s.focusLinkVertexCount > 0;
+        const bool focused = s.focusLinks.vertexCount > 0;
         s.lineProgram.set("colour", glm::vec4(1.0f, 0.9f, 0.45f, focused ? 0.05f : 0.12f));
-        s.linkLayout.bind();
-        glDrawArrays(GL_LINES, 0, s.linkVertexCount);
+        s.links.layout.bind();
+        glDrawArrays(GL_LINES, 0, s.links.vertexCount);
         if (focused) {
             glDisable(GL_DEPTH_TEST);  // all of them, also where they pass behind a block
             s.lineProgram.set("colour", glm::vec4(0.3f, 0.95f, 1.0f, 0.85f));
-            s.focusLinkLayout.bind();
-            glDrawArrays(GL_LINES, 0, s.focusLinkVertexCount);
+            s.focusLinks.layout.bind();
+            glDrawArrays(GL_LINES, 0, s.focusLinks.vertexCount);
             glEnable(GL_DEPTH_TEST);
         }
         glDisable(GL_BLEND);
