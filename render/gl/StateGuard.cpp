@@ -16,6 +16,10 @@ StateGuard::StateGuard()
     glGetBooleanv(GL_DEPTH_WRITEMASK, &depthWrite_);
     glGetIntegerv(GL_DEPTH_FUNC, &depthFunc_);
     glGetIntegerv(GL_CULL_FACE_MODE, &cullMode_);
+    glGetIntegerv(GL_BLEND_SRC_RGB, &blendSourceRgb_);
+    glGetIntegerv(GL_BLEND_DST_RGB, &blendDestinationRgb_);
+    glGetIntegerv(GL_BLEND_SRC_ALPHA, &blendSourceAlpha_);
+    glGetIntegerv(GL_BLEND_DST_ALPHA, &blendDestinationAlpha_);
 }
 
 StateGuard::~StateGuard() {
@@ -29,6 +33,8 @@ StateGuard::~StateGuard() {
     glDepthMask(depthWrite_);
     glDepthFunc(static_cast<GLenum>(depthFunc_));
     glCullFace(static_cast<GLenum>(cullMode_));
+    glBlendFuncSeparate(static_cast<GLenum>(blendSourceRgb_), static_cast<GLenum>(blendDestinationRgb_),
+                        static_cast<GLenum>(blendSourceAlpha_), static_cast<GLenum>(blendDestinationAlpha_));
     glBindVertexArray(0);
     glUseProgram(0);
 }

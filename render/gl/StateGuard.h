@@ -1,7 +1,7 @@
 #pragma once
 // Saves the GL state a drawing pass off the main scene changes (the hemicube's item buffer, the
 // dome overlay) and restores it when the pass's scope ends, so the caller's next draw finds its
-// framebuffer, viewport, tests and depth settings as it left them.
+// framebuffer, viewport, tests, blend function and depth settings as it left them.
 #include <epoxy/gl.h>
 
 namespace radiant::render::gl {
@@ -24,6 +24,8 @@ private:
     GLboolean blend_ = GL_FALSE, cull_ = GL_FALSE, depthTest_ = GL_FALSE, scissor_ = GL_FALSE;
     GLboolean depthWrite_ = GL_TRUE;
     GLint depthFunc_ = GL_LESS, cullMode_ = GL_BACK;
+    GLint blendSourceRgb_ = GL_ONE, blendDestinationRgb_ = GL_ZERO, blendSourceAlpha_ = GL_ONE,
+          blendDestinationAlpha_ = GL_ZERO;
 };
 
 } // namespace radiant::render::gl

@@ -129,6 +129,7 @@ void HemicubeRenderer::render(const glm::dvec3& x, const HemicubeFrame& frame, c
     glDisable(GL_CULL_FACE);  // back faces still occlude; the shader marks them
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);  // a caller that left depth writes off would leave the clear below undone
     const GLuint empty[4] = {kHemicubeEmpty, 0, 0, 0};
     glClearBufferuiv(GL_COLOR, 0, empty);
     glClear(GL_DEPTH_BUFFER_BIT);
