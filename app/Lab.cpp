@@ -236,12 +236,7 @@ struct Lab::State {
         const std::optional<ProbePick>& pick = probePanel->picked();
         std::optional<command::FocusedPoint> focus;
         if (pick) focus = command::FocusedPoint{pick->surface, pick->face, pick->point, pick->meshGeneration};
-        const auto same = [](const std::optional<command::FocusedPoint>& a, const std::optional<command::FocusedPoint>& b) {
-            if (!a || !b) return a.has_value() == b.has_value();
-            return a->surface == b->surface && a->face == b->face && a->point == b->point &&
-                   a->meshGeneration == b->meshGeneration;
-        };
-        if (same(focus, focusSent)) return;
+        if (focus == focusSent) return;
         live.send(command::FocusPoint{focus});
         focusSent = focus;
     }

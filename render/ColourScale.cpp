@@ -16,11 +16,6 @@ double linearToSrgb(double linear) {
     return c <= 0.0031308 ? 12.92 * c : 1.055 * std::pow(c, 1.0 / 2.4) - 0.055;
 }
 
-glm::dvec3 toneMap(const glm::dvec3& radiosityW_m2, double exposureScale) {
-    const glm::dvec3 x = radiosityW_m2 * exposureScale;
-    return {linearToSrgb(acesFitted(x.x)), linearToSrgb(acesFitted(x.y)), linearToSrgb(acesFitted(x.z))};
-}
-
 ToneCurveTable::ToneCurveTable() {
     for (int i = 0; i <= kEntries; ++i) {
         const double u = static_cast<double>(i) / kEntries;

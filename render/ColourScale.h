@@ -13,8 +13,6 @@ namespace radiant::render {
 double acesFitted(double x);
 /// The sRGB transfer function (IEC 61966-2-1) from linear [0, 1] to encoded [0, 1].
 double linearToSrgb(double linear);
-/// Linear radiosity (W/m^2) times `exposureScale` (1/(W/m^2)) -> sRGB-encoded display colour in [0, 1].
-glm::dvec3 toneMap(const glm::dvec3& radiosityW_m2, double exposureScale);
 
 /// linearToSrgb(acesFitted(x)) from a table, for the tens of thousands of values recoloured on every
 /// new solution: std::pow per band was most of the main thread's work per snapshot. Sampled on

@@ -42,6 +42,15 @@ struct GridVertex {
     glm::vec3 layout;    ///< first atlas row, columns, rows
 };
 
+/// The attributes of GridVertex in `buffer`, as patch.vert.glsl's LIGHT_MAP variant reads them.
+void describeGridVertices(gl::VertexArray& layout, const gl::Buffer& buffer) {
+    constexpr std::size_t stride = sizeof(GridVertex);
+    layout.addFloatAttribute(buffer, 0, 3, stride, offsetof(GridVertex, position));
+    layout.addFloatAttribute(buffer, 2, 3, stride, offsetof(GridVertex, normal));
+    layout.addFloatAttribute(buffer, 5, 2, stride, offsetof(GridVertex, grid));
+    layout.addFloatAttribute(buffer, 6, 3, stride, offsetof(GridVertex, layout));
+}
+
 struct PatchVertex {
     glm::vec3 position;  ///< m
     glm::vec3 edge;      ///< barycentric coordinate; 1 everywhere for the edge a quad's split hides
@@ -330,15 +339,8 @@ PatchRenderer::PatchRenderer() : state_(std::make_unique<State>()) {
     state_->layout.addFloatAttribute(state_->vertices, 2, 3, stride, offsetof(PatchVertex, normal));
     state_->layout.addFloatAttribute(state_->colours, 3, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, colour));
     state_->layout.addFloatAttribute(state_->colours, 4, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, tint));
-    constexpr std::size_t gridStride = sizeof(GridVertex);
-    state_->gridLayout.addFloatAttribute(state_->gridVertices, 0, 3, gridStride, offsetof(GridVertex, position));
-    state_->gridLayout.addFloatAttribute(state_->gridVertices, 2, 3, gridStride, offsetof(GridVertex, normal));
-    state_->gridLayout.addFloatAttribute(state_->gridVertices, 5, 2, gridStride, offsetof(GridVertex, grid));
-    state_->gridLayout.addFloatAttribute(state_->gridVertices, 6, 3, gridStride, offsetof(GridVertex, layout));
-    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 0, 3, gridStride, offsetof(GridVertex, position));
-    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 2, 3, gridStride, offsetof(GridVertex, normal));
-    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 5, 2, gridStride, offsetof(GridVertex, grid));
-    state_->outlineLayout.addFloatAttribute(state_->outlineCell, 6, 3, gridStride, offsetof(GridVertex, layout));
+    describeGridVertices(state_->gridLayout, state_->gridVertices);
+    describeGridVertices(state_->outlineLayout, state_->outlineCell);
     glBindVertexArray(0);
     state_->program(0);  // the common variant, so a broken shader fails here rather than mid-frame
 }

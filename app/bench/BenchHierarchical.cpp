@@ -12,7 +12,6 @@
 #include "app/bench/BenchTable.h"
 #include "app/bench/HierarchicalAccuracy.h"
 #include "radiometry/mesh/PatchMesh.h"
-#include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
 
@@ -34,10 +33,9 @@ BenchTable benchHierarchical(const BenchOptions& options) {
                       "vs Gauss-Seidel", "furnace rms", "furnace worst leaf"},
                      {},
                      {}};
-    const Scene scene = makeCornellBox();
-    MeshingOptions meshing;
-    meshing.maxPatchArea = 0.01;  // the patches the window shows; the leaves are independent of them
-    const PatchMesh mesh = meshScene(scene, meshing);
+    const CornellBoxAsShown box = cornellBoxAsShown();
+    const Scene& scene = box.scene;
+    const PatchMesh& mesh = box.mesh;
     const GaussSeidelReference& reference = cornellGaussSeidelReference(options.quick);
     const std::vector<Rgb>& referenceMeans = reference.surfaceMeans;
     const std::vector<Target> targets = options.quick

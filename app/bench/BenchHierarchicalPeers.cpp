@@ -15,7 +15,6 @@
 #include "app/bench/BenchTable.h"
 #include "app/bench/HierarchicalAccuracy.h"
 #include "radiometry/mesh/PatchMesh.h"
-#include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
 
@@ -132,10 +131,9 @@ BenchTable benchHierarchicalPeers(const BenchOptions& options) {
                       "peer / Radiant", "vs Gauss-Seidel", "furnace rms"},
                      {},
                      {}};
-    const Scene scene = makeCornellBox();
-    MeshingOptions meshing;
-    meshing.maxPatchArea = 0.01;  // the patches the window shows; the leaves are independent of them
-    const PatchMesh mesh = meshScene(scene, meshing);
+    const CornellBoxAsShown box = cornellBoxAsShown();
+    const Scene& scene = box.scene;
+    const PatchMesh& mesh = box.mesh;
     const GaussSeidelReference& reference = cornellGaussSeidelReference(options.quick);
     const int repeats = options.quick ? 1 : 3;
     // The machine is shared: a load above the 2 cores explains wall times that CPU times do not.

@@ -10,6 +10,14 @@
 
 namespace radiant::app {
 
+CornellBoxAsShown cornellBoxAsShown() {
+    CornellBoxAsShown box{makeCornellBox(), {}};
+    MeshingOptions meshing;
+    meshing.maxPatchArea = 0.01;  // the leaves are independent of these patches
+    box.mesh = meshScene(box.scene, meshing);
+    return box;
+}
+
 std::vector<Rgb> surfaceMeans(const Scene& scene, const PatchMesh& mesh, const std::vector<Rgb>& radiosity) {
     std::vector<Rgb> sum(scene.surfaces.size(), Rgb(0.0));
     std::vector<double> area(scene.surfaces.size(), 0.0);

@@ -12,6 +12,14 @@
 
 namespace radiant::app {
 
+/// The Cornell box and the patches the window shows (0.01 m^2), which a hierarchical solver maps
+/// its leaves to: every hierarchical table times its solves on these.
+struct CornellBoxAsShown {
+    Scene scene;
+    PatchMesh mesh;
+};
+CornellBoxAsShown cornellBoxAsShown();
+
 /// Per surface, the area-weighted mean radiosity (W/m^2 per band).
 std::vector<Rgb> surfaceMeans(const Scene& scene, const PatchMesh& mesh, const std::vector<Rgb>& radiosity);
 

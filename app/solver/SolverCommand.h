@@ -42,6 +42,7 @@ struct FocusedPoint {
     std::uint32_t face = 0;  ///< within the surface
     glm::dvec3 point{0.0};   ///< m, on the face
     std::uint64_t meshGeneration = 0;  ///< the mesh it was picked on; another mesh ignores it
+    bool operator==(const FocusedPoint&) const = default;
 };
 struct FocusPoint {
     std::optional<FocusedPoint> at;  ///< nullopt: none
