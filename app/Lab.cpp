@@ -27,6 +27,7 @@
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/Sidebar.h"
+#include "app/ui/Theme.h"
 #include "app/ui/StatusBar.h"
 #include "app/window/CameraController.h"
 #include "app/window/PickRay.h"
@@ -44,7 +45,7 @@ namespace {
 
 // Behind the box: a dark neutral grey, so no colour competes with the walls' and the box's edges
 // stay visible where they meet the background.
-const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
+const glm::vec3 kBackground{kBackdrop.r, kBackdrop.g, kBackdrop.b};
 
 std::shared_ptr<const Scene> openScene(const std::string& nameOrPath) {
     LoadedScene loaded = loadScene(nameOrPath);

@@ -13,7 +13,16 @@ float Sidebar::draw(const std::string& heading, const std::string& subheading) {
     constexpr ImGuiWindowFlags flags = ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoMove |
                                        ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                        ImGuiWindowFlags_NoBringToFrontOnFocus | ImGuiWindowFlags_NoSavedSettings;
+    // The window's clear has painted the backdrop (app/ui/Theme.h): no second, blended coat.
+    ImGui::PushStyleColor(ImGuiCol_WindowBg, IM_COL32(0, 0, 0, 0));
     ImGui::Begin("##sidebar", nullptr, flags);
+    ImGui::PopStyleColor();
+    // Where the panels end and the 3D view, on the same backdrop, begins (behind the window: its own
+    // draw list clips to inside the scrollbar).
+    const ImVec2 origin = ImGui::GetWindowPos();
+    ImGui::GetBackgroundDrawList()->AddLine({origin.x + width - 0.5f, origin.y},
+                                        {origin.x + width - 0.5f, origin.y + viewport->WorkSize.y},
+                                        ImGui::GetColorU32(ImGuiCol_Border));
     ImGui::TextUnformatted(heading.c_str());
     ImGui::SameLine();
     ImGui::TextDisabled("%s", subheading.c_str());

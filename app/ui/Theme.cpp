@@ -32,7 +32,7 @@ void applyTheme(ImGuiStyle& style, float scale) {
     style.WindowTitleAlign = {0.0f, 0.5f};
 
     const ImVec4 background = rgb(24, 26, 30);
-    const ImVec4 panel = rgb(30, 33, 38);
+    const ImVec4 panel{kBackdrop.r, kBackdrop.g, kBackdrop.b, 1.0f};
     const ImVec4 frame = rgb(43, 47, 54);
     const ImVec4 frameHover = rgb(54, 59, 68);
     const ImVec4 accent = rgb(79, 140, 214);
