@@ -27,8 +27,8 @@
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/Sidebar.h"
-#include "app/ui/Theme.h"
 #include "app/ui/StatusBar.h"
+#include "app/ui/Theme.h"
 #include "app/window/CameraController.h"
 #include "app/window/PickRay.h"
 #include "app/window/Window.h"
@@ -43,8 +43,8 @@
 namespace radiant::app {
 namespace {
 
-// Behind the box: a dark neutral grey, so no colour competes with the walls' and the box's edges
-// stay visible where they meet the background.
+// Behind the box and the panels alike (app/ui/Theme.h): a dark neutral grey, so no colour competes
+// with the walls' and the box's edges stay visible where they meet the background.
 const glm::vec3 kBackground{kBackdrop.r, kBackdrop.g, kBackdrop.b};
 
 std::shared_ptr<const Scene> openScene(const std::string& nameOrPath) {
