@@ -3,6 +3,7 @@
 // (radiometry/probe/Probe.h), printed as the JSON of docs/ARCHITECTURE.
 #include <CLI/CLI.hpp>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <fstream>
 #include <iostream>
@@ -40,9 +41,12 @@ struct ProbeCommandOptions {
     std::string json = "-";
 };
 
+/// The scene, its loader warnings printed on stderr (they also go into the JSON).
 Scene loadProbeScene(const std::string& nameOrPath) {
 #ifdef RADIANT_PROBE_HAS_SCENE_LIBRARY
-    return loadScene(nameOrPath).scene;
+    Scene scene = loadScene(nameOrPath).scene;
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+    return scene;
 #else
     if (nameOrPath == "cornell-box") return makeCornellBox();
     throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
@@ -124,8 +128,9 @@ int runProbe(const ProbeCommandOptions& options) {
         }
         radiosity = solver->solution();
         solution = "solved";
-    } catch (const BudgetError&) {
-        throw;
+    } catch (const BudgetError& e) {
+        if (!e.where().file.empty()) throw;
+        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
     } catch (const RadiantError& e) {
         // A solver still being written throws "not available"; the probe stays useful without it.
         if (std::string(e.what()).find("not available") == std::string::npos) throw;
@@ -155,6 +160,7 @@ int runProbe(const ProbeCommandOptions& options) {
                      {"form_factor", t.formFactor},
                      {"unoccluded_solid_angle_sr", t.unoccludedSolidAngle.value()},
                      {"unoccluded_form_factor", t.unoccludedFormFactor}};
+    out["warnings"] = scene.warnings;
 
     const std::string text = out.dump(2) + "\n";
     if (options.json == "-") {

@@ -2,9 +2,12 @@
 // command line waits anyway), then draw from the scene's home camera into an offscreen framebuffer
 // of a hidden window's GL context and write the PNG.
 #include <CLI/CLI.hpp>
+#include <algorithm>
 #include <cstdio>
 #include <memory>
 #include <string>
+
+#include <glm/geometric.hpp>
 
 #include "app/cli/CommandLine.h"
 #include "app/window/Window.h"
@@ -32,12 +35,45 @@ struct RenderOptions {
     bool flat = false;
     bool wireframe = false;
     float exposureStops = 0.0f;
+    std::string camera;  ///< a glTF camera's name or index; empty: the home camera
 };
 
 // The lab's background: a dark neutral grey that no wall colour competes with.
 const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
 constexpr double kTolerance = 1e-3;
 constexpr std::size_t kMaxIterations = 100000;
+
+/// --camera: the scene's camera of that name, else of that index (names win: "1" may be a name).
+render::Camera sceneCamera(const Scene& scene, const std::string& wanted) {
+    const SceneCamera* found = nullptr;
+    for (const SceneCamera& camera : scene.cameras)
+        if (camera.name == wanted && !found) found = &camera;
+    if (!found && !wanted.empty() && wanted.find_first_not_of("0123456789") == std::string::npos && wanted.size() < 10) {
+        const std::size_t index = std::stoul(wanted);
+        if (index < scene.cameras.size()) found = &scene.cameras[index];
+    }
+    if (!found) {
+        std::string known;
+        for (std::size_t c = 0; c < scene.cameras.size(); ++c)
+            known += (c == 0 ? "" : ", ") + std::to_string(c) + " '" + scene.cameras[c].name + "'";
+        throw RadiantError({scene.name, "--camera"}, "no camera '" + wanted + "' (" +
+                                                         (known.empty() ? std::string("the scene has no cameras") : "cameras: " + known) + ")");
+    }
+    render::Camera camera;
+    camera.eye = found->position;
+    camera.forward = found->forward;
+    camera.up = found->up;
+    camera.fieldOfView = Radians(found->verticalFieldOfView);
+    // Far enough for every corner of the scene; the near plane stays the lab's 1 cm.
+    glm::dvec3 lo, hi;
+    render::sceneBounds(scene, lo, hi);
+    double farthest = 0;
+    for (int corner = 0; corner < 8; ++corner)
+        farthest = std::max(farthest, glm::length(glm::dvec3(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,
+                                                              corner & 4 ? hi.z : lo.z) - camera.eye));
+    camera.farPlane = std::max(camera.farPlane, 1.1 * farthest);
+    return camera;
+}
 
 int runRender(const RenderOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
@@ -52,12 +88,19 @@ int runRender(const RenderOptions& options) {
     const Window window({64, 64, "radiant render", /*visible=*/false, /*vsync=*/false});
 
     LoadedScene loaded = loadScene(options.scene);
-    for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+    for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
     const Scene& scene = loaded.scene;
+    const render::Camera camera = options.camera.empty() ? render::homeCamera(scene) : sceneCamera(scene, options.camera);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
-    const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+    std::unique_ptr<Solver> solver;
+    try {
+        solver = makeSolver(method, scene, mesh);
+    } catch (const BudgetError& e) {
+        if (!e.where().file.empty()) throw;
+        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
+    }
     IterationStats stats;
     do stats = solver->step();
     while (stats.residual > kTolerance && stats.iteration < kMaxIterations);
@@ -76,7 +119,7 @@ int runRender(const RenderOptions& options) {
     settings.highlightShooter = false;
     renderer.setSettings(settings);
     const render::ImageRgb8 image =
-        render::renderOffscreen(renderer, render::homeCamera(scene), options.width, options.height, kBackground);
+        render::renderOffscreen(renderer, camera, options.width, options.height, kBackground);
     render::writePng(image, options.png);
     std::printf("%s: %zu patches, %s, %zu iterations, residual %.3g; wrote %s (%d x %d)\n", options.scene.c_str(),
                 mesh.size(), std::string(methodName(method)).c_str(), stats.iteration, stats.residual,
@@ -111,6 +154,7 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_flag("--wireframe", options->wireframe, "draw the patch edges");
     sub->add_option("--exposure", options->exposureStops, "exposure in stops relative to the automatic key")
         ->capture_default_str();
+    sub->add_option("--camera", options->camera, "the scene's camera (a glTF camera) by NAME or INDEX; default: the home view");
     return {sub, [options] { return runRender(*options); }};
 }
 

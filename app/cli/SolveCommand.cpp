@@ -37,9 +37,12 @@ struct SolveOptions {
     std::string csv;
 };
 
+/// The scene, its loader warnings printed on stderr (they also go into the JSON).
 Scene loadSceneByName(const std::string& nameOrPath) {
 #ifdef RADIANT_HAS_SCENE_LIBRARY
-    return loadScene(nameOrPath).scene;
+    Scene scene = loadScene(nameOrPath).scene;
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+    return scene;
 #else
     if (nameOrPath == "cornell-box") return makeCornellBox();
     throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
@@ -113,7 +116,12 @@ int runSolve(const SolveOptions& options) {
     std::unique_ptr<Solver> solver;
     {
         const ProgressLine bar(progress, "form factors");
-        solver = makeSolver(method, scene, mesh, SolverOptions{}, &progress);
+        try {
+            solver = makeSolver(method, scene, mesh, SolverOptions{}, &progress);
+        } catch (const BudgetError& e) {
+            if (!e.where().file.empty()) throw;
+            throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
+        }
     }
     const double formFactorSeconds = secondsSince(formFactorStart);
 
@@ -150,7 +158,8 @@ int runSolve(const SolveOptions& options) {
         {"iterations", stats.iteration},
         {"residual", stats.residual},
         {"seconds", {{"mesh", meshSeconds}, {"form_factors", formFactorSeconds}, {"solve", solveSeconds}}},
-        {"surfaces", surfaces}};
+        {"surfaces", surfaces},
+        {"warnings", scene.warnings}};
 
     if (!options.json.empty()) writeText(options.json, report.dump(2) + "\n", "--json");
     if (!options.csv.empty()) {

@@ -1,5 +1,6 @@
 #include "app/panels/SceneJob.h"
 
+#include <cstdio>
 #include <exception>
 
 #include "radiometry/scene/SceneLibrary.h"
@@ -22,7 +23,8 @@ void SceneJob::start(const std::string& nameOrPath) {
         SceneJobResult result;
         try {
             LoadedScene loaded = loadScene(nameOrPath);
-            result.warnings = std::move(loaded.warnings);
+            // As on the command line; the Scene panel shows them from the scene too.
+            for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
             result.scene = std::make_shared<const Scene>(std::move(loaded.scene));
         } catch (const std::exception& e) {
             result.error = e.what();

@@ -8,15 +8,13 @@
 #include <optional>
 #include <string>
 #include <thread>
-#include <vector>
 
 #include "radiometry/scene/Scene.h"
 
 namespace radiant::app {
 
 struct SceneJobResult {
-    std::shared_ptr<const Scene> scene;  ///< null when loading failed
-    std::vector<std::string> warnings;
+    std::shared_ptr<const Scene> scene;  ///< null when loading failed; its warnings in Scene::warnings
     std::string error;  ///< the RadiantError's one line, when it failed
 };
 

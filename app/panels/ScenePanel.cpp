@@ -37,7 +37,6 @@ void ScenePanel::update() {
         return;
     }
     error_.clear();
-    warnings_ = std::move(result->warnings);
     live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{maxPatchArea_}});
 }
 
@@ -49,6 +48,8 @@ void ScenePanel::draw() {
         row("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
         row("Patches", "%zu", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
+        if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
+            ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
     } else {
         ImGui::TextDisabled("no scene loaded");
     }
@@ -80,9 +81,10 @@ void ScenePanel::draw() {
             ImGui::TextWrapped("%s", message->c_str());
             ImGui::PopStyleColor();
         }
-    if (!warnings_.empty()) {
+    // The loader's warnings travel with the scene, so they show however it was opened.
+    if (snapshot.scene && !snapshot.scene->warnings.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        for (const std::string& warning : warnings_) ImGui::TextWrapped("%s", warning.c_str());
+        for (const std::string& warning : snapshot.scene->warnings) ImGui::TextWrapped("%s", warning.c_str());
         ImGui::PopStyleColor();
     }
 }

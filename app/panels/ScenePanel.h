@@ -34,7 +34,6 @@ private:
     std::vector<std::string> builtins_;
     std::array<char, 1024> path_{};
     std::string error_;
-    std::vector<std::string> warnings_;
     SceneJob job_;
 };
 

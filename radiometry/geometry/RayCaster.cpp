@@ -5,7 +5,10 @@
 // Embree works in float. Two guards keep a ray from reporting the surface it starts (or ends) on:
 // an intersection filter rejects triangles whose plane contains the ray's origin (or, for
 // segments, its end point) - tested in double against the face's own plane - and segments are
-// shortened at both ends by an epsilon relative to their length.
+// shortened at both ends by an epsilon relative to their length. The same filter makes a
+// two-sided face (two surfaces back to back, FaceSide) answer a ray with the side it meets from
+// the front: the twin's plane holds the origin of any ray leaving the other side, so it never
+// blocks it at distance 0, and a ray arriving from behind is handed to the twin facing it.
 #include "radiometry/geometry/RayCaster.h"
 
 #include <algorithm>
@@ -27,6 +30,7 @@ struct TriangleInfo {
     double planeOffset;   ///< normal . p for every p on the face
     std::uint32_t surface;
     std::uint32_t face;
+    bool twoSided;        ///< a coincident reversed twin exists (Surface::side is Front or Back)
 };
 
 // Segments are shortened by this fraction of their length at each end.
@@ -67,6 +71,7 @@ struct QueryContext {
     glm::dvec3 start;
     glm::dvec3 end;
     bool hasEnd;
+    glm::dvec3 direction;  ///< of an intersect query; zero for occlusion, where either twin blocks
 };
 
 void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
@@ -77,7 +82,9 @@ void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
     const auto onPlane = [&](const glm::dvec3& p) {
         return std::abs(glm::dot(triangle.normal, p) - triangle.planeOffset) <= tolerance;
     };
-    if (onPlane(query->start) || (query->hasEnd && onPlane(query->end))) args->valid[0] = 0;
+    if (onPlane(query->start) || (query->hasEnd && onPlane(query->end)) ||
+        (triangle.twoSided && glm::dot(triangle.normal, query->direction) > 0))
+        args->valid[0] = 0;
 }
 
 void throwOnDeviceError(RTCDevice device, const std::string& what) {
@@ -86,8 +93,10 @@ void throwOnDeviceError(RTCDevice device, const std::string& what) {
         throw RadiantError({"Embree", what}, "Embree error code " + std::to_string(static_cast<int>(error)));
 }
 
-QueryContext makeContext(const TriangleTable& impl, const glm::dvec3& start, const glm::dvec3& end, bool hasEnd) {
+QueryContext makeContext(const TriangleTable& impl, const glm::dvec3& start, const glm::dvec3& end, bool hasEnd,
+                         const glm::dvec3& direction = glm::dvec3(0.0)) {
     QueryContext context{};
+    context.direction = direction;
     rtcInitIntersectContext(&context.embree);
     context.impl = &impl;
     context.start = start;
@@ -169,7 +178,8 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
                     vertices[3 * nextVertex + 2] = static_cast<float>(local.z);
                     ++nextVertex;
                 }
-                const TriangleInfo info{face.normal, glm::dot(face.normal, face.vertices[0]), s, f};
+                const TriangleInfo info{face.normal, glm::dot(face.normal, face.vertices[0]), s, f,
+                                        surface.side != FaceSide::Single};
                 // Fan from the first corner: faces are convex.
                 for (std::uint32_t k = 1; k + 1 < face.vertices.size(); ++k) {
                     indices[nextIndex++] = first;
@@ -198,7 +208,7 @@ std::optional<RayHit> RayCaster::intersect(const glm::dvec3& origin, const glm::
     const double length = glm::length(direction);
     if (!(length > 0) || !(maxDistance > 0)) return std::nullopt;
     const glm::dvec3 unit = direction / length;
-    QueryContext context = makeContext(*impl_, origin, origin, false);
+    QueryContext context = makeContext(*impl_, origin, origin, false, unit);
     RTCRayHit rayHit{};
     setRay(rayHit.ray, origin - impl_->origin, unit, 0.0, maxDistance);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;

@@ -18,6 +18,8 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/GltfAccessors.h"
+#include "radiometry/scene/GltfCameras.h"
+#include "radiometry/scene/GltfExternalFiles.h"
 #include "radiometry/scene/GltfMaterials.h"
 #include "radiometry/scene/TriangleMerging.h"
 
@@ -35,13 +37,6 @@ std::string describe(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g", value);
     return text;
-}
-
-bool isBinaryGltf(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    char magic[4] = {};
-    in.read(magic, 4);
-    return in.gcount() == 4 && magic[0] == 'g' && magic[1] == 'l' && magic[2] == 'T' && magic[3] == 'F';
 }
 
 bool hasBinaryMagic(std::span<const unsigned char> bytes) {
@@ -78,6 +73,16 @@ struct Instance {
     glm::dmat4 world{1.0};
 };
 
+/// The same faces seen from behind: corners reversed but still fanning from the first, so the
+/// ray caster's triangles of both sides coincide exactly.
+std::vector<Face> reversed(std::vector<Face> faces) {
+    for (Face& face : faces) {
+        std::reverse(face.vertices.begin() + 1, face.vertices.end());
+        face.updateGeometry();
+    }
+    return faces;
+}
+
 class Loader {
 public:
     Loader(const std::string& path, const SceneLoadOptions& options) : path_(path), options_(options) {}
@@ -89,25 +94,62 @@ public:
         const std::vector<Instance> instances = collectInstances();
         checkTriangleBudget(instances);
         for (const Instance& instance : instances) addNode(instance);
+        warnAboutLights();
         if (droppedTriangles_ > 0)
             result_.warnings.push_back(path_ + ": dropped " + std::to_string(droppedTriangles_) +
                                        " zero-area triangle(s), the first in " + firstDropped_);
         if (result_.scene.surfaces.empty()) throw RadiantError({path_, ""}, "no triangles to light (no triangle primitives in the scene)");
         result_.scene.name = path_;
+        result_.scene.warnings = result_.warnings;
         return std::move(result_);
     }
 
 private:
     void readModel() {
         if (fromMemory_) return readModelFromMemory();
+        const std::vector<unsigned char> bytes = detail::readSceneFile(path_, options_.fileByteBudget);
+        if (bytes.empty()) throw RadiantError({path_, ""}, "is empty, not a glTF file");
+        if (bytes.size() > std::numeric_limits<unsigned int>::max())
+            throw BudgetError({path_, ""}, "is " + describe(static_cast<double>(bytes.size())) + " bytes; a glTF file is limited to 4 GiB");
+        // Absolute, so tinygltf's fallback to the current directory ("./" + uri) is the only
+        // relative candidate and the file system below refuses it.
         std::error_code ec;
-        if (!std::filesystem::is_regular_file(path_, ec)) throw RadiantError({path_, ""}, "no such file");
+        const std::filesystem::path folder = std::filesystem::absolute(path_, ec).parent_path();
+        detail::checkExternalFiles(bytes, folder, path_, options_.fileByteBudget, result_.warnings);
         tinygltf::TinyGLTF reader;
+        reader.SetFsCallbacks(detail::sceneFolderFileSystem(options_.fileByteBudget));
         std::string error, warning;
-        const bool ok = isBinaryGltf(path_) ? reader.LoadBinaryFromFile(&model_, &error, &warning, path_)
-                                            : reader.LoadASCIIFromFile(&model_, &error, &warning, path_);
+        const auto length = static_cast<unsigned int>(bytes.size());
+        const bool ok = hasBinaryMagic(bytes)
+                            ? reader.LoadBinaryFromMemory(&model_, &error, &warning, bytes.data(), length, folder.string())
+                            : reader.LoadASCIIFromString(&model_, &error, &warning, reinterpret_cast<const char*>(bytes.data()), length, folder.string());
         if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
-        if (!warning.empty()) result_.warnings.push_back(path_ + ": " + oneLine(warning));
+        addReaderWarnings(warning);
+    }
+
+    /// tinygltf's warnings, less those about external images checkExternalFiles already named.
+    void addReaderWarnings(const std::string& warning) {
+        std::string kept;
+        for (std::size_t start = 0; start < warning.size();) {
+            std::size_t end = warning.find('\n', start);
+            if (end == std::string::npos) end = warning.size();
+            const std::string line = warning.substr(start, end - start);
+            start = end + 1;
+            if (line.empty() || line.rfind("File not found", 0) == 0 || line.rfind("Failed to load external 'uri' for image", 0) == 0) continue;
+            kept += (kept.empty() ? "" : "\n") + line;
+        }
+        if (!kept.empty()) result_.warnings.push_back(path_ + ": " + oneLine(kept));
+    }
+
+    void warnAboutLights() {
+        for (std::size_t l = 0; l < model_.lights.size(); ++l) {
+            const tinygltf::Light& light = model_.lights[l];
+            const std::string name = light.name.empty() ? "light " + std::to_string(l) : "light '" + light.name + "'";
+            result_.warnings.push_back(path_ + ": " + name + " (" + (light.type.empty() ? "untyped" : light.type) +
+                                       ", KHR_lights_punctual) is ignored: Radiant does not support punctual lights yet; "
+                                       "use an emissive surface");
+        }
+        result_.ignoredLights = model_.lights.size();
     }
 
     void readModelFromMemory() {
@@ -122,7 +164,7 @@ private:
                             ? reader.LoadBinaryFromMemory(&model_, &error, &warning, memory_.data(), length, "")
                             : reader.LoadASCIIFromString(&model_, &error, &warning, reinterpret_cast<const char*>(memory_.data()), length, "");
         if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
-        if (!warning.empty()) result_.warnings.push_back(path_ + ": " + oneLine(warning));
+        addReaderWarnings(warning);
     }
 
     std::vector<Instance> collectInstances() {
@@ -156,6 +198,9 @@ private:
         const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(node)];
         const glm::dmat4 world = parent * localTransform(n);
         if (n.mesh >= 0) instances.push_back({node, world});
+        if (n.camera >= 0)
+            if (auto camera = detail::readCamera(model_, n.camera, n.name, world, path_, result_.warnings))
+                result_.scene.cameras.push_back(std::move(*camera));
         for (int child : n.children) visit(child, world, depth + 1, instances);
     }
 
@@ -208,6 +253,9 @@ private:
         const tinygltf::Mesh& mesh = model_.meshes[static_cast<std::size_t>(node.mesh)];
         // A mirroring transform flips the winding; glTF says the front face flips with it.
         const bool mirrored = glm::determinant(glm::dmat3(instance.world)) < 0;
+        const auto trianglePrimitives = std::count_if(mesh.primitives.begin(), mesh.primitives.end(), [](const tinygltf::Primitive& p) {
+            return p.mode < 0 || p.mode == TINYGLTF_MODE_TRIANGLES;
+        });
         for (std::size_t p = 0; p < mesh.primitives.size(); ++p) {
             const tinygltf::Primitive& primitive = mesh.primitives[p];
             const SourceLocation where{path_, "mesh " + std::to_string(node.mesh) + ", primitive " + std::to_string(p)};
@@ -254,11 +302,27 @@ private:
 
             std::string name = !node.name.empty() ? node.name : !mesh.name.empty() ? mesh.name : "mesh " + std::to_string(node.mesh);
             Surface surface;
-            surface.name = uniqueName(std::move(name));
             surface.material = sceneMaterial(primitive.material, where);
+            // Blender splits an object by material into primitives of one mesh: name each part
+            // after its material ("Room/Floor"), not by a counter ("Room (2)").
+            if (trianglePrimitives > 1) name += "/" + result_.scene.materials[surface.material].name;
+            surface.name = uniqueName(std::move(name));
             surface.faces = detail::mergeTriangles(positions, triangles);
             surface.origin = where.element;
+            const bool doubleSided = primitive.material >= 0 && model_.materials[static_cast<std::size_t>(primitive.material)].doubleSided;
+            if (!doubleSided) {
+                result_.scene.surfaces.push_back(std::move(surface));
+                continue;
+            }
+            Surface back;
+            back.name = uniqueName(surface.name + " (back)");
+            back.material = surface.material;
+            back.faces = reversed(surface.faces);
+            back.origin = surface.origin + ", back side (doubleSided)";
+            surface.side = FaceSide::Front;
+            back.side = FaceSide::Back;
             result_.scene.surfaces.push_back(std::move(surface));
+            result_.scene.surfaces.push_back(std::move(back));
         }
     }
 

@@ -6,8 +6,16 @@
 //    u32) or not. Units are metres, as glTF defines them.
 //  - Faces: coplanar edge-adjacent triangles of one primitive that form a convex quad become one
 //    quad face, so a wall exported as two triangles is one face.
-//  - Surfaces: one per primitive instance, named after its node, else its mesh, else "mesh N",
-//    with " (2)", " (3)" ... where a name repeats; Surface::origin is "mesh M, primitive P".
+//  - Surfaces: one per primitive instance, named after its node, else its mesh, else "mesh N";
+//    where a mesh has several primitives, "<node>/<material name>"; " (2)", " (3)" ... where a
+//    name still repeats; Surface::origin is "mesh M, primitive P".
+//  - doubleSided materials: each face is also a reversed twin surface "<name> (back)" right after
+//    it (Surface::side), meshed and solved on its own; an emissive one emits from both sides.
+//  - Cameras: perspective cameras placed by nodes become Scene::cameras (orthographic: a warning).
+//  - KHR_lights_punctual lights are not supported: each is named in a warning.
+//  - External files (buffers, images) resolve against the glTF's own folder only; each must be a
+//    regular file within its byteLength and SceneLoadOptions::fileByteBudget (GltfExternalFiles.h).
+//    A missing image is a warning, and its material uses reflectance baseColorFactor x 0.5.
 //  - Materials: reflectance = baseColorFactor x the mean of baseColorTexture (decoded, sRGB to
 //    linear) where there is one; exitance (W/m^2) = emissiveFactor x KHR_materials_emissive_strength.
 //    extras.radiant {"reflectance": [r, g, b], "exitance_W_m2": [r, g, b]} overrides either with
@@ -16,6 +24,7 @@
 // Bad input throws RadiantError with one line naming the file and the element; recoverable
 // oddities (zero-area triangles, points and lines, reflectance >= 1 clamped to 0.999) are warnings.
 #include <cstddef>
+#include <cstdint>
 #include <span>
 #include <string>
 #include <vector>
@@ -26,11 +35,13 @@ namespace radiant {
 
 struct SceneLoadOptions {
     std::size_t triangleBudget = 2'000'000;  ///< refuse (BudgetError, with the numbers) above this
+    std::uint64_t fileByteBudget = std::uint64_t{1} << 30;  ///< per file read (glTF, buffer, image)
 };
 
 struct LoadedScene {
     Scene scene;
-    std::vector<std::string> warnings;  ///< one line each, already naming file and element
+    std::vector<std::string> warnings;  ///< one line each, already naming file and element (= scene.warnings)
+    std::size_t ignoredLights = 0;      ///< KHR_lights_punctual lights, each also named in a warning
 };
 
 /// Loads a .gltf or .glb file. Scene::name is the path as given.

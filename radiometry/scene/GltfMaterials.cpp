@@ -14,6 +14,14 @@ namespace radiant::detail {
 namespace {
 
 constexpr double kMaxReflectance = 0.999;
+/// What an unreadable base colour texture averages to: the grey a primitive without material gets.
+constexpr double kMissingTextureMean = 0.5;
+
+std::string describeNumber(double v) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", v);
+    return text;
+}
 
 std::string describe(const Rgb& v) {
     char text[96];
@@ -75,15 +83,21 @@ Material convertMaterial(const tinygltf::Model& model, std::size_t index, const 
     Rgb reflectance(base.size() > 0 ? base[0] : 1.0, base.size() > 1 ? base[1] : 1.0, base.size() > 2 ? base[2] : 1.0);
     const int texture = source.pbrMetallicRoughness.baseColorTexture.index;
     if (texture >= 0) {
+        const int image = static_cast<std::size_t>(texture) < model.textures.size() ? model.textures[static_cast<std::size_t>(texture)].source : -1;
+        const bool hasImage = image >= 0 && static_cast<std::size_t>(image) < model.images.size();
         Rgb mean;
-        const bool usable = static_cast<std::size_t>(texture) < model.textures.size() &&
-                            model.textures[static_cast<std::size_t>(texture)].source >= 0 &&
-                            static_cast<std::size_t>(model.textures[static_cast<std::size_t>(texture)].source) < model.images.size() &&
-                            imageMean(model.images[static_cast<std::size_t>(model.textures[static_cast<std::size_t>(texture)].source)], mean);
-        if (usable)
+        if (hasImage && imageMean(model.images[static_cast<std::size_t>(image)], mean)) {
             reflectance *= mean;
-        else
-            warnings.push_back(where.str() + ": base colour texture " + std::to_string(texture) + " could not be read; using the factor alone");
+        } else {
+            // The factor alone is often white (Blender writes none beside a texture), which would
+            // clamp to 0.999: a mid grey stands in for the texture, and the warning says so.
+            reflectance *= kMissingTextureMean;
+            const std::string uri = hasImage ? model.images[static_cast<std::size_t>(image)].uri : std::string();
+            const std::string what = "base colour texture " + std::to_string(texture) +
+                                     (uri.empty() || uri.rfind("data:", 0) == 0 ? std::string() : " '" + uri + "'");
+            warnings.push_back(where.str() + ": " + what + " could not be read; using reflectance " + describe(reflectance) +
+                               " (baseColorFactor x " + describeNumber(kMissingTextureMean) + ", a mid grey) instead");
+        }
     }
 
     const auto& emissive = source.emissiveFactor;

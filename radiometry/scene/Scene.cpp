@@ -38,6 +38,18 @@ std::size_t Scene::faceCount() const {
     return n;
 }
 
+std::size_t Scene::doubleSidedSurfaceCount() const {
+    std::size_t n = 0;
+    for (const Surface& s : surfaces) n += s.side == FaceSide::Front ? 1 : 0;
+    return n;
+}
+
+bool Scene::emits() const {
+    for (const Surface& s : surfaces)
+        if (s.material < materials.size() && materials[s.material].emits() && s.area() > 0) return true;
+    return false;
+}
+
 std::size_t Scene::findSurface(const std::string& surfaceName) const {
     for (std::size_t i = 0; i < surfaces.size(); ++i)
         if (surfaces[i].name == surfaceName) return i;

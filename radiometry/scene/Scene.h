@@ -31,23 +31,45 @@ struct Face {
     void updateGeometry();
 };
 
+/// Which side of a two-sided face a surface is. A double-sided glTF material makes each face two
+/// surfaces back to back (the front as written, the back reversed, named "<name> (back)"), each
+/// meshed and solved on its own: one radiosity per side, as a sheet lit from both sides has.
+enum class FaceSide { Single, Front, Back };
+
 /// A named group of faces sharing one material: what the Materials panel edits ("left wall").
 struct Surface {
     std::string name;
     std::size_t material = 0;  ///< index into Scene::materials
     std::vector<Face> faces;
     std::string origin;        ///< where it came from, for messages: "mesh 3, primitive 0"
+    /// Front: the next surface is its reversed twin (Back), face for face; Back: the previous one.
+    FaceSide side = FaceSide::Single;
 
     [[nodiscard]] double area() const;
+};
+
+/// A perspective view stored with the scene (a glTF camera): where a renderer may look from.
+struct SceneCamera {
+    std::string name;                ///< the camera's, else its node's, else "camera N"
+    glm::dvec3 position{0.0};        ///< m
+    glm::dvec3 forward{0, 0, -1};    ///< unit: glTF cameras look down their local -z
+    glm::dvec3 up{0, 1, 0};          ///< unit, perpendicular to forward
+    double verticalFieldOfView = 0;  ///< radians (glTF yfov)
+    double aspectRatio = 0;          ///< width / height as stored; 0 when the file leaves it open
 };
 
 struct Scene {
     std::string name;  ///< built-in name or file path
     std::vector<Material> materials;
     std::vector<Surface> surfaces;
+    std::vector<SceneCamera> cameras;   ///< in file order; may be empty
+    std::vector<std::string> warnings;  ///< the loader's, one line each, naming file and element
 
     [[nodiscard]] double totalArea() const;
     [[nodiscard]] std::size_t faceCount() const;
+    /// Faces made two surfaces back to back (counted once per pair).
+    [[nodiscard]] std::size_t doubleSidedSurfaceCount() const;
+    [[nodiscard]] bool emits() const;
     /// Index of the surface with this name, or npos.
     [[nodiscard]] std::size_t findSurface(const std::string& surfaceName) const;
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);

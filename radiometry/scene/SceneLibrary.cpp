@@ -22,9 +22,28 @@ std::string assetDirectory() {
     return {};
 }
 
+namespace {
+
+/// Every command and the lab solve what they load, and a scene without a source solves to zero
+/// everywhere ("residual 0", a black picture): refused before any form factor is computed.
+LoadedScene requireEmitter(LoadedScene loaded) {
+    if (!loaded.scene.emits()) {
+        const std::size_t lights = loaded.ignoredLights;
+        throw RadiantError({loaded.scene.name, ""},
+                           "no surface emits and no light is supported: give a material an emissive colour "
+                           "(emissiveFactor, with KHR_materials_emissive_strength for W/m^2, or extras.radiant.exitance_W_m2)" +
+                               (lights == 0 ? std::string()
+                                            : "; " + std::to_string(lights) + " KHR_lights_punctual light" + (lights == 1 ? "" : "s") +
+                                                  " ignored: Radiant does not support punctual lights yet"));
+    }
+    return loaded;
+}
+
+} // namespace
+
 LoadedScene loadScene(const std::string& nameOrPath, const SceneLoadOptions& options) {
     const std::vector<std::string> names = builtinSceneNames();
-    if (std::find(names.begin(), names.end(), nameOrPath) == names.end()) return loadGltf(nameOrPath, options);
+    if (std::find(names.begin(), names.end(), nameOrPath) == names.end()) return requireEmitter(loadGltf(nameOrPath, options));
 
     const std::string directory = assetDirectory();
     if (directory.empty())
@@ -32,7 +51,7 @@ LoadedScene loadScene(const std::string& nameOrPath, const SceneLoadOptions& opt
                                                  std::string(RADIANT_ASSET_DIR) + " and ../share/radiant/assets beside the program)");
     LoadedScene loaded = loadGltf((std::filesystem::path(directory) / (nameOrPath + ".gltf")).string(), options);
     loaded.scene.name = nameOrPath;
-    return loaded;
+    return requireEmitter(std::move(loaded));
 }
 
 } // namespace radiant
