@@ -37,7 +37,7 @@ struct DisplayVertex {
 /// A corner of a grid face's quad: drawn with its light map (FaceGrids.h).
 struct GridVertex {
     glm::vec3 position;  ///< m
-    glm::vec3 normal;    ///< the face's, unit
+    glm::vec3 normal;    ///< the face's, unit; doubled on a two-sided face (sidedNormal)
     glm::vec2 grid;      ///< grid coordinates: (0, 0) .. (columns, rows)
     glm::vec3 layout;    ///< first atlas row, columns, rows
 };
@@ -54,8 +54,13 @@ void describeGridVertices(gl::VertexArray& layout, const gl::Buffer& buffer) {
 struct PatchVertex {
     glm::vec3 position;  ///< m
     glm::vec3 edge;      ///< barycentric coordinate; 1 everywhere for the edge a quad's split hides
-    glm::vec3 normal;    ///< the patch's, unit
+    glm::vec3 normal;    ///< the patch's, unit; doubled on a two-sided face (sidedNormal)
 };
+
+/// A two-sided face (Surface::side) is two coincident surfaces, one per side, which the depth test
+/// cannot tell apart: their normals arrive doubled, and the TWO_SIDED shader variant drops the
+/// fragments of whichever of the two is seen from behind, so each side shows its own radiosity.
+glm::vec3 sidedNormal(const glm::dvec3& normal, bool twoSided) { return glm::vec3(twoSided ? 2.0 * normal : normal); }
 
 
 double luminance(const Rgb& b) { return glm::dot(b, glm::dvec3(0.2126, 0.7152, 0.0722)); }
@@ -97,7 +102,8 @@ ColourInputs colourInputs(const DisplaySettings& d, double exposureScale) {
 }
 
 /// The shader variant for a combination of features (bit 0 false colour, 1 isolines, 2 edges, 3
-/// light-mapped grid faces rather than triangles, and for those 4 flat shading, 5 tints).
+/// light-mapped grid faces rather than triangles, and for those 4 flat shading, 5 tints; 6 two-sided
+/// faces in the scene).
 std::string variantDefines(unsigned variant) {
     std::string defines;
     if (variant & 8u) defines += "#define LIGHT_MAP 1\n";
@@ -106,13 +112,14 @@ std::string variantDefines(unsigned variant) {
     if (variant & 1u) defines += "#define FALSE_COLOUR 1\n";
     if (variant & 2u) defines += "#define ISOLINES 1\n";
     if (variant & 4u) defines += "#define EDGES 1\n";
+    if (variant & 64u) defines += "#define TWO_SIDED 1\n";
     return defines;
 }
 
 } // namespace
 
 struct PatchRenderer::State {
-    std::array<std::unique_ptr<gl::ShaderProgram>, 64> programs;  // compiled on first use
+    std::array<std::unique_ptr<gl::ShaderProgram>, 128> programs;  // compiled on first use
     gl::ShaderProgram lineProgram{"wire.vert.glsl", "wire.frag.glsl"};
     gl::Buffer vertices;
     gl::VertexArray layout;
@@ -175,6 +182,8 @@ struct PatchRenderer::State {
     std::int64_t shooter = -1;
     bool coloursDirty = true;
     bool anyTint = false;  // some patch is tinted or outlined in the colours last made
+    std::vector<char> patchTwoSided;  // per patch: its surface is one side of a two-sided face
+    bool anyTwoSided = false;
     ColourInputs coloursMadeWith;
 
     // CPU copies of the data, to smooth, diff and recolour without the mesh.
@@ -240,7 +249,7 @@ void PatchRenderer::State::uploadGrids() {
         const std::array<glm::vec2, 4> at{glm::vec2(0, 0), glm::vec2(columns, 0), glm::vec2(columns, rows),
                                           glm::vec2(0, rows)};
         for (const int k : {0, 1, 2, 0, 2, 3})
-            quads.push_back({glm::vec3(grid.corners[static_cast<std::size_t>(k)]), glm::vec3(grid.normal),
+            quads.push_back({glm::vec3(grid.corners[static_cast<std::size_t>(k)]), sidedNormal(grid.normal, patchTwoSided[grid.cellPatch[0]] != 0),
                              at[static_cast<std::size_t>(k)], atlasLayout});
     }
     gridVertices.setData(std::span<const GridVertex>(quads));
@@ -284,7 +293,7 @@ void PatchRenderer::State::uploadOutlineCell(std::size_t g, std::uint32_t cell) 
         const double u = static_cast<double>(column) / grid.columns, v = static_cast<double>(row) / grid.rows;
         const std::array<glm::dvec3, 4>& c = grid.corners;
         const glm::dvec3 position = c[0] + (c[1] - c[0]) * u + (c[3] - c[0]) * v + (c[0] - c[1] + c[2] - c[3]) * (u * v);
-        return GridVertex{glm::vec3(position), glm::vec3(grid.normal),
+        return GridVertex{glm::vec3(position), sidedNormal(grid.normal, patchTwoSided[grid.cellPatch[0]] != 0),
                           glm::vec2(static_cast<float>(column), static_cast<float>(row)),
                           glm::vec3(static_cast<float>(grid.atlasRow), static_cast<float>(grid.columns),
                                     static_cast<float>(grid.rows))};
@@ -367,6 +376,9 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.drawnSmoothing.clear();
     s.patchFirstVertex.assign(n + 1, 0);
     s.grids = findFaceGrids(scene, mesh);
+    s.patchTwoSided.resize(n);
+    for (std::size_t p = 0; p < n; ++p) s.patchTwoSided[p] = scene.surfaces[mesh.patches[p].surface].side != FaceSide::Single;
+    s.anyTwoSided = std::find(s.patchTwoSided.begin(), s.patchTwoSided.end(), 1) != s.patchTwoSided.end();
     for (std::size_t p = 0; p < n; ++p) {
         const Patch& patch = mesh.patches[p];
         s.patchFirstVertex[p] = static_cast<GLint>(triangles.size());
@@ -382,7 +394,7 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
         }
         if (s.grids.patchInGrid[p]) continue;  // drawn by its face's light map
         const auto corner = [&](std::uint8_t c, const glm::vec3& edge) {
-            triangles.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, glm::vec3(patch.normal)});
+            triangles.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, sidedNormal(patch.normal, s.patchTwoSided[p] != 0)});
             s.drawnPatch.push_back(static_cast<std::uint32_t>(p));
             s.drawnSmoothing.push_back(s.patchSmoothing[p][c]);
         };
@@ -650,7 +662,7 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     const bool falseColour = d.colourMode == ColourMode::FalseColour && s.hasRadiosity;
     const bool outline = d.highlightShooter && s.hasRadiosity && s.shooter >= 0 &&
                          static_cast<std::size_t>(s.shooter) < s.patchSurface.size();
-    const unsigned colourVariant = (falseColour ? 1u : 0u) | (falseColour && d.isolines ? 2u : 0u);
+    const unsigned colourVariant = (falseColour ? 1u : 0u) | (falseColour && d.isolines ? 2u : 0u) | (s.anyTwoSided ? 64u : 0u);
 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);

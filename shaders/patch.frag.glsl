@@ -27,6 +27,9 @@ flat in int outlined;
 #endif
 
 uniform int wireframe;
+#ifdef TWO_SIDED
+in float behind;  // > 0: this side of a two-sided face is seen from behind (patch.vert.glsl)
+#endif
 
 out vec4 fragColour;
 
@@ -49,6 +52,9 @@ vec3 viridis(float t) {
 #endif
 
 void main() {
+#ifdef TWO_SIDED
+    if (behind > 0.0) discard;  // the twin facing the eye is drawn here
+#endif
 #ifdef LIGHT_MAP
     ivec2 cell = ivec2(clamp(floor(gridCoordinate), vec2(0.0), layoutOfGrid.yz - 1.0)) + ivec2(0, int(layoutOfGrid.x));
     // One lookup per pixel: each is a good part of what software GL spends on a pixel.

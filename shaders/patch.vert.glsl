@@ -8,6 +8,12 @@
 // vertices its own colour.
 // LIGHT_MAP: a grid face (render/FaceGrids.h) drawn as one quad; its colours come per pixel from
 // atlas textures (patch.frag.glsl), so this passes on only the grid coordinates.
+// TWO_SIDED: a normal of length 2 marks a face that is one of two coincident sides (PatchRenderer's
+// sidedNormal); `behind` > 0 where it is seen from behind, and the fragment shader drops it there so
+// its twin, facing the eye, shows.
+#ifdef TWO_SIDED
+out float behind;
+#endif
 #ifdef LIGHT_MAP
 layout(location = 0) in vec3 position;
 layout(location = 2) in vec3 normal;      // the face's, unit
@@ -24,10 +30,14 @@ flat out vec3 layoutOfGrid;
 out float shade;
 
 void main() {
+#ifdef TWO_SIDED
+    behind = dot(normal, normal) > 2.0 ? dot(normal, position - eye) : -1.0;
+#endif
     shade = 1.0;
     if (hasRadiosity == 0) {
         vec3 toEye = normalize(eye - position);
-        vec3 n = dot(normal, toEye) < 0.0 ? -normal : normal;
+        vec3 unitNormal = normalize(normal);
+        vec3 n = dot(unitNormal, toEye) < 0.0 ? -unitNormal : unitNormal;
         shade = 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
     }
     gridCoordinate = grid;
@@ -56,12 +66,16 @@ out vec3 edge;
 flat out int outlined;
 
 void main() {
+#ifdef TWO_SIDED
+    behind = dot(normal, normal) > 2.0 ? dot(normal, position - eye) : -1.0;
+#endif
     displayColour = colour.rgb;
     if (hasRadiosity == 0) {
         // No solution yet: the materials, dimmed where the face turns away (a display aid, so the
         // dimming acts on the encoded colour).
         vec3 toEye = normalize(eye - position);
-        vec3 n = dot(normal, toEye) < 0.0 ? -normal : normal;
+        vec3 unitNormal = normalize(normal);
+        vec3 n = dot(unitNormal, toEye) < 0.0 ? -unitNormal : unitNormal;
         displayColour *= 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
     }
     legendT = colour.a;

@@ -244,6 +244,14 @@ TEST_CASE("a glTF camera is read with its node's pose, and a multi-material obje
     CHECK(loaded.scene.surfaces.size() == 3);
 }
 
+TEST_CASE("a form-factor matrix over budget is refused naming the scene's file") {
+    const Run run = runRadiant("solve '" + blenderFile("cube_room.gltf") + "' --method jacobi --max-patch-area 0.0002");
+    INFO(run.err);
+    CHECK(run.status == 2);
+    CHECK(lineCount(run.err) == 1);
+    CHECK(contains(run.err, "cube_room.gltf: form-factor matrix: a form-factor matrix for"));
+}
+
 TEST_CASE("an external buffer outside the scene's folder is allowed") {
     const LoadedScene loaded = loadScene(blenderFile("outside_folder.gltf"));
     CHECK(loaded.scene.totalArea() == doctest::Approx(1.0));
