@@ -44,8 +44,13 @@ Refusal loadRefusal(const std::string& path) {
     return refusal;
 }
 
+struct CommandResult {
+    int status = -1;
+    std::string output;  ///< stdout and stderr together
+};
+
 /// `radiant solve PATH`'s exit status and everything it printed; `timeout` turns a hang into 124.
-std::pair<int, std::string> solveCommand(const std::string& path) {
+CommandResult solveCommand(const std::string& path) {
     const std::string command = "timeout 20 '" + std::string(RADIANT_BINARY) + "' solve '" + path + "' 2>&1";
     FILE* pipe = popen(command.c_str(), "r");
     REQUIRE(pipe);
@@ -91,11 +96,11 @@ TEST_CASE("an external buffer or image that is not a regular file of the stated 
         CHECK(contains(refusal.message, c.problem));
         CHECK(!contains(refusal.message, "\n"));
         CHECK(refusal.seconds < 1.0);
-        const auto [status, output] = solveCommand(regressionFile(c.file));
-        INFO(output);
-        CHECK(status == 2);
-        CHECK(std::count(output.begin(), output.end(), '\n') == 1);
-        CHECK(contains(output, c.problem));
+        const CommandResult run = solveCommand(regressionFile(c.file));
+        INFO(run.output);
+        CHECK(run.status == 2);
+        CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
+        CHECK(contains(run.output, c.problem));
     }
 }
 
@@ -107,19 +112,19 @@ TEST_CASE("a FIFO named by a buffer, or given as the scene, is refused without o
     for (const char* name : {"external_fifo.gltf", "scene.gltf"}) {
         CAPTURE(name);
         const auto start = std::chrono::steady_clock::now();
-        const auto [status, output] = solveCommand((scratch.path / name).string());
+        const CommandResult run = solveCommand((scratch.path / name).string());
         const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        INFO(output);
-        CHECK(status == 2);  // 124 would be the timeout ending a hang
-        CHECK(std::count(output.begin(), output.end(), '\n') == 1);
-        CHECK(contains(output, "is a FIFO (named pipe), not a file"));
+        INFO(run.output);
+        CHECK(run.status == 2);  // 124 would be the timeout ending a hang
+        CHECK(std::count(run.output.begin(), run.output.end(), '\n') == 1);
+        CHECK(contains(run.output, "is a FIFO (named pipe), not a file"));
         CHECK(seconds < 1.0);
     }
     // The scene itself a directory: refused, not std::bad_alloc.
-    const auto [status, output] = solveCommand(scratch.path.string());
-    INFO(output);
-    CHECK(status == 2);
-    CHECK(contains(output, "is a directory, not a file"));
+    const CommandResult directory = solveCommand(scratch.path.string());
+    INFO(directory.output);
+    CHECK(directory.status == 2);
+    CHECK(contains(directory.output, "is a directory, not a file"));
 }
 
 TEST_CASE("relative URIs resolve against the glTF's folder, never the current directory") {
