@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
@@ -105,6 +106,20 @@ std::string_view jsonText(std::span<const unsigned char> bytes) {
     return text(20, length);
 }
 
+/// Whether any "uri" in the JSON text may name a file (is not a data: URI): most scenes embed
+/// everything, and then the text need not be parsed twice. A key spelt with escapes slips past this
+/// scan, and then sceneFolderFileSystem's checks still hold.
+bool mayNameFiles(std::string_view json) {
+    constexpr std::string_view key = "\"uri\"";
+    for (std::size_t at = json.find(key); at != std::string_view::npos; at = json.find(key, at + key.size())) {
+        std::size_t value = at + key.size();
+        while (value < json.size() && (json[value] == ' ' || json[value] == '\t' || json[value] == '\n' || json[value] == '\r' || json[value] == ':'))
+            ++value;
+        if (json.substr(value, 6) != "\"data:") return true;
+    }
+    return false;
+}
+
 bool isExternal(const nlohmann::json& resource) {
     const auto uri = resource.find("uri");
     return uri != resource.end() && uri->is_string() && uri->get<std::string>().rfind("data:", 0) != 0;
@@ -127,7 +142,9 @@ std::vector<unsigned char> readSceneFile(const std::string& path, std::uint64_t 
 
 void checkExternalFiles(std::span<const unsigned char> bytes, const std::filesystem::path& folder,
                         const std::string& file, std::uint64_t byteBudget, std::vector<std::string>& warnings) {
-    const nlohmann::json gltf = nlohmann::json::parse(jsonText(bytes), nullptr, /*allow_exceptions=*/false);
+    const std::string_view text = jsonText(bytes);
+    if (!mayNameFiles(text)) return;
+    const nlohmann::json gltf = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
     if (!gltf.is_object()) return;  // tinygltf says what is wrong with it
     // tinygltf joins folder and URI with '/', so an absolute URI stays inside the folder too.
     const auto resolve = [&](const nlohmann::json& resource) { return folder.string() + "/" + decodeUri(resource["uri"].get<std::string>()); };
