@@ -91,8 +91,10 @@ struct Lab::State {
         glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int) {
             if (action == GLFW_RELEASE) return;
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
-            // Typing into a field, or a slider being dragged, keeps its keys.
-            if (ImGui::GetCurrentContext() && ImGui::GetIO().WantCaptureKeyboard) return;
+            // Typing into a field, or a slider being dragged, keeps its keys; a panel merely
+            // clicked does not (the lecturer's presenter sends Space and Page Down whatever was
+            // clicked last).
+            if (ImGuiLayer::keyboardClaimed()) return;
             // Held keys repeat only where repeating makes sense: stepping.
             if (action == GLFW_REPEAT && key != GLFW_KEY_N && key != GLFW_KEY_RIGHT) return;
             self->onKey(key);
@@ -242,6 +244,28 @@ struct Lab::State {
         focusSent = focus;
     }
 
+    /// True while the picture can change without input: a solve running or being built, a newer
+    /// snapshot not shown yet, a panel's background work or animation, or input moments ago (ImGui
+    /// settles hover and the camera glides over the next frames).
+    bool changing() const {
+        const Snapshot& shown = live.snapshot();
+        if (shown.running || solverThread.activity() != SolverActivity::Idle) return true;
+        if (solverThread.snapshot()->generation != shown.generation) return true;
+        if (sidebar.busy() || screenshotRequested) return true;
+        return glfwGetTime() - lastInput < kAwakeAfterInput;
+    }
+
+    /// Sleeps until an event arrives (or `maxSeconds`, for work that posts none) when nothing on
+    /// screen can change: a converged, untouched lab must not keep a core busy redrawing it.
+    void waitWhileIdle(double maxSeconds) {
+        if (changing()) return;
+        const double before = glfwGetTime();
+        glfwWaitEventsTimeout(maxSeconds);
+        const double after = glfwGetTime();
+        if (after - before < 0.9 * maxSeconds) lastInput = after;  // woken by an event, not the timeout
+        lastFrameTime.reset();  // a wait is not a slow frame
+    }
+
     void frame(render::ImageRgb8* capture) {
         const double now = glfwGetTime();
         if (lastFrameTime) frames.add(now - *lastFrameTime);
@@ -320,6 +344,9 @@ struct Lab::State {
     std::optional<command::FocusedPoint> focusSent;
     std::string message;
     std::uint64_t frameCount = 0;
+    /// How long frames keep coming after the last input event (s).
+    static constexpr double kAwakeAfterInput = 0.5;
+    double lastInput = 0;  ///< glfwGetTime() of the last event that woke an idle wait
 };
 
 Lab::Lab(const LabOptions& options) : state_(std::make_unique<State>(options)) {}
@@ -328,6 +355,17 @@ Lab::~Lab() = default;
 bool Lab::shouldClose() const { return state_->window.shouldClose(); }
 void Lab::requestClose() { state_->window.requestClose(); }
 void Lab::frame() { state_->frame(nullptr); }
+void Lab::frameWhenNeeded(double maxWaitSeconds) {
+    state_->waitWhileIdle(maxWaitSeconds);
+    state_->frame(nullptr);
+}
+bool Lab::changing() const { return state_->changing(); }
+void Lab::overrideMouse(std::optional<glm::vec2> windowPoint, bool leftDown) {
+    if (windowPoint)
+        state_->ui->overrideMouse(ImGuiLayer::MouseOverride{windowPoint->x, windowPoint->y, leftDown});
+    else
+        state_->ui->overrideMouse(std::nullopt);
+}
 
 render::ImageRgb8 Lab::frameAndCapture() {
     render::ImageRgb8 image;

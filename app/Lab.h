@@ -35,6 +35,14 @@ public:
     /// Handles input, takes the newest snapshot (never waits for the solver), draws one frame and
     /// shows it.
     void frame();
+    /// As frame(), but first sleeps until input arrives (at most `maxWaitSeconds`) when nothing on
+    /// screen can change: the window's loop, so an idle lab leaves the CPU alone.
+    void frameWhenNeeded(double maxWaitSeconds = 0.5);
+    /// True while frames can show something new without input (see frameWhenNeeded).
+    [[nodiscard]] bool changing() const;
+    /// Tests: the pointer at a point of the window (ImGui coordinates, top-left origin) with the left
+    /// button up or down, in place of the real pointer, from the next frame; nullopt gives it back.
+    void overrideMouse(std::optional<glm::vec2> windowPoint, bool leftDown = false);
     /// As frame(), and returns the framebuffer as drawn (panels included when shown), top row first.
     render::ImageRgb8 frameAndCapture();
 

@@ -41,7 +41,7 @@ int runLab(const LabOptions& options) {
     const long captureAt = automation.frames > 0 ? automation.frames : 120;
     while (!lab.shouldClose()) {
         if (automation.screenshot.empty()) {
-            lab.frame();
+            lab.frameWhenNeeded();
             continue;
         }
         const auto frame = lab.frameCount();

@@ -10,7 +10,6 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
-#include "radiometry/solver/GatheringSolver.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ProgressiveSolver.h"
 #include "radiometry/solver/Solver.h"
@@ -40,12 +39,7 @@ double peakResidentMegabytes() {
 
 /// The solver's own byte count where it keeps one, else the process peak (marked so).
 std::string memoryCell(const Solver& solver) {
-    if (const auto* gathering = dynamic_cast<const GatheringSolver*>(&solver))
-        return formatNumber(static_cast<double>(gathering->bytes()) / (1 << 20));
-    if (const auto* hierarchical = dynamic_cast<const HierarchicalSolver*>(&solver))  // importance too
-        return formatNumber(static_cast<double>(hierarchical->bytes()) / (1 << 20));
-    if (const auto* progressive = dynamic_cast<const ProgressiveSolver*>(&solver))
-        return formatNumber(static_cast<double>(progressive->bytes()) / (1 << 20));
+    if (const std::size_t bytes = solver.bytes(); bytes > 0) return formatNumber(static_cast<double>(bytes) / (1 << 20));
     return formatNumber(peakResidentMegabytes()) + " (process peak)";
 }
 
@@ -78,8 +72,6 @@ BenchTable benchSolvers(const BenchOptions& options) {
     // The matrix grows as n^2: past this the gathering rows would only measure the form factors.
     const std::size_t gatheringLimit = options.quick ? 1000 : 3000;
     const double budget = options.quick ? 10.0 : 60.0;  // seconds of stepping per row
-    const SolverMethod methods[] = {SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
-                                    SolverMethod::Hierarchical, SolverMethod::Importance};
     // Progressive refinement has its own rows below, at the densities its target is stated for.
     const auto stepRow = [&](const std::string& name, const std::string& patches, double setupSeconds, Solver& solver) {
         Crossing coarse, fine;
@@ -96,11 +88,12 @@ BenchTable benchSolvers(const BenchOptions& options) {
         MeshingOptions meshing;
         meshing.maxPatchArea = areaForPatchCount(scene, target);
         const PatchMesh mesh = meshScene(scene, meshing);
-        for (const SolverMethod method : methods) {
-            if (method == SolverMethod::Progressive) continue;
+        for (const SolverMethodInfo& info : solverMethods()) {
+            const SolverMethod method = info.method;
+            if (info.traits.shoots) continue;  // its own rows below, at its own sizes
             const std::string name(methodName(method));
             const std::string patches = std::to_string(mesh.size());
-            if ((method == SolverMethod::Jacobi || method == SolverMethod::GaussSeidel) && mesh.size() > gatheringLimit) {
+            if (info.traits.formFactorMatrix && mesh.size() > gatheringLimit) {
                 table.rows.push_back({name, patches, "skipped (n^2 matrix)", "", "", ""});
                 continue;
             }

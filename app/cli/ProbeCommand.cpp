@@ -183,7 +183,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--point", options->point, "X,Y,Z on a surface, metres")->required();
     sub->add_option("--normal", options->normal, "X,Y,Z: the probe's facing direction")->required();
     sub->add_option("--target", options->target, "surface to measure (default: the first emitting surface)");
-    sub->add_option("--method", options->method, "jacobi, gauss-seidel, progressive, hierarchical or importance")
+    sub->add_option("--method", options->method, methodNameList())
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();

@@ -144,7 +144,7 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_option("--width", options->width, "image width in pixels")->capture_default_str();
     sub->add_option("--height", options->height, "image height in pixels")->capture_default_str();
     sub->add_option("--method", options->method,
-                    "jacobi, gauss-seidel, progressive, hierarchical or importance")
+                    methodNameList())
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
     sub->add_flag("--false-colour,--false-color", options->falseColour,

@@ -192,7 +192,7 @@ Subcommand addSolveCommand(CLI::App& root) {
     auto options = std::make_shared<SolveOptions>();
     CLI::App* sub = root.add_subcommand("solve", "Solve a scene's radiosity without a window; write JSON and CSV");
     sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
-    sub->add_option("--method", options->method, "jacobi, gauss-seidel, progressive, hierarchical or importance")
+    sub->add_option("--method", options->method, methodNameList())
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "Largest patch, m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "Stop at this residual (fraction of emitted power)")

@@ -28,6 +28,7 @@ public:
 
     void select(HemisphereIntegrand integrand, const IntegralSettings& settings);
     void run(bool on) { running_ = on; }
+    [[nodiscard]] bool busy() const override { return running_; }
     [[nodiscard]] const HemisphereIntegralRun& current() const { return *run_; }
     HemisphereIntegralRun& current() { return *run_; }
 

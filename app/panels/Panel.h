@@ -10,6 +10,9 @@ public:
     [[nodiscard]] virtual bool openByDefault() const { return true; }
     /// Called once every frame, shown or not, before drawing (poll background work here).
     virtual void update() {}
+    /// True while the panel changes without input (background work in flight, a run animating):
+    /// the lab keeps drawing frames instead of waiting for events.
+    [[nodiscard]] virtual bool busy() const { return false; }
     /// Called inside the sidebar window, between the panel's header and the next one.
     virtual void draw() = 0;
 };

@@ -99,6 +99,10 @@ void ProbePanel::update() {
     if (stale && (dirty_ || now - lastStart_ >= kRefreshInterval)) startMeasuring(now);
 }
 
+bool ProbePanel::busy() const {
+    return job_.valid() || (pick_ && (dirty_ || live_.snapshot().generation != readingGeneration_));
+}
+
 void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
     std::shared_ptr<const Snapshot> snapshot = live_.current;
     if (!snapshot->scene || !snapshot->mesh || !picker_ || picker_->meshGeneration != snapshot->meshGeneration)

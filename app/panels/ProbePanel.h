@@ -39,6 +39,8 @@ public:
     [[nodiscard]] const char* title() const override { return "Probe"; }
     void update() override;
     void draw() override;
+    /// A measurement in flight or due: its reading arrives without input.
+    [[nodiscard]] bool busy() const override;
 
     /// Casts the ray into the current scene and probes the nearest hit; false when it hits nothing.
     bool pick(const glm::dvec3& origin, const glm::dvec3& direction);

@@ -24,6 +24,7 @@ public:
     /// Starts loading a built-in name or a .gltf/.glb path (the drop target calls this too).
     void open(const std::string& nameOrPath);
     [[nodiscard]] bool loading() const { return job_.running(); }
+    [[nodiscard]] bool busy() const override { return loading(); }
 
 private:
     void drawMeshing();

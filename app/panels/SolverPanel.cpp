@@ -3,9 +3,9 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
+#include <string_view>
 
 #include "app/solver/MethodLabel.h"
 #include "app/ui/Colours.h"
@@ -13,13 +13,8 @@
 namespace radiant::app {
 namespace {
 
-constexpr std::array kMethods{SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
-                              SolverMethod::Hierarchical, SolverMethod::Importance};
-
-bool shoots(SolverMethod method) { return method == SolverMethod::Progressive; }
-bool links(SolverMethod method) {
-    return method == SolverMethod::Hierarchical || method == SolverMethod::Importance;
-}
+bool shoots(SolverMethod method) { return methodInfo(method).traits.shoots; }
+bool links(SolverMethod method) { return methodInfo(method).traits.links; }
 
 void row(const char* label, const char* format, auto... values) {
     ImGui::TextDisabled("%s", label);
@@ -44,9 +39,10 @@ void SolverPanel::draw() {
 void SolverPanel::drawControls(const Snapshot& snapshot) {
     ImGui::SetNextItemWidth(-1);
     if (ImGui::BeginCombo("##method", methodLabel(snapshot.method))) {
-        for (const SolverMethod method : kMethods)
-            if (ImGui::Selectable(methodLabel(method), method == snapshot.method) && method != snapshot.method)
-                live_.send(command::SetMethod{method});
+        for (const SolverMethodInfo& method : solverMethods())
+            if (ImGui::Selectable(method.label.data(), method.method == snapshot.method) &&
+                method.method != snapshot.method)
+                live_.send(command::SetMethod{method.method});
         ImGui::EndCombo();
     }
 
@@ -75,7 +71,8 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
     if (ImGui::IsItemDeactivatedAfterEdit())
         live_.send(command::SetTolerance{std::pow(10.0, static_cast<double>(toleranceExponent_))});
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Run stops when the relative residual falls below this");
+        ImGui::SetTooltip("Run stops when the method's convergence measure (the row below the iteration) falls "
+                          "below this");
 }
 
 void SolverPanel::drawStats(const Snapshot& snapshot) {
@@ -84,9 +81,13 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     const bool converged = !snapshot.running && stats.iteration > 0 && stats.residual < snapshot.tolerance;
     row("State", "%s", snapshot.running ? "running" : converged ? "converged" : stats.iteration > 0 ? "paused" : "ready");
     row("Iteration", "%zu", stats.iteration);
-    row("Residual", "%.3e", stats.iteration > 0 ? stats.residual : 1.0);
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("max over bands of sum A|B - E - rho F B| / sum A E (dimensionless)");
+    row(shoots(snapshot.method) ? "Unshot / emitted" : links(snapshot.method) ? "Sweep change" : "Residual", "%.3e",
+        stats.iteration > 0 ? stats.residual : 1.0);
+    if (ImGui::IsItemHovered()) {
+        const std::string_view meaning = methodInfo(snapshot.method).residual;
+        ImGui::SetTooltip("%.*s (dimensionless; Run stops below the tolerance)", static_cast<int>(meaning.size()),
+                          meaning.data());
+    }
     if (shoots(snapshot.method)) {
         row("Unshot power", "%.4g W", total(stats.unshotPower));
         if (stats.shooter >= 0) row("Last shooter", "patch %lld", static_cast<long long>(stats.shooter));
@@ -119,7 +120,9 @@ void SolverPanel::drawPlots(const Snapshot& snapshot) {
                          *hi > *lo ? *hi : *lo + 1.0f, {width, height});
     };
     auto log10Of = [](double v) { return static_cast<float>(std::log10(std::max(v, 1e-300))); };
-    plot("##residual", "log10 residual  vs  iteration", [&](const IterationStats& s) { return log10Of(s.residual); });
+    plot("##residual", shoots(snapshot.method) ? "log10 unshot / emitted  vs  iteration"
+                       : links(snapshot.method)  ? "log10 sweep change  vs  iteration"
+                                                 : "log10 residual  vs  iteration", [&](const IterationStats& s) { return log10Of(s.residual); });
     if (shoots(snapshot.method))
         plot("##unshot", "log10 unshot power (W)  vs  iteration",
              [&](const IterationStats& s) { return log10Of(total(s.unshotPower)); });

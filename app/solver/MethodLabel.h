@@ -1,19 +1,11 @@
 #pragma once
 // Method names as people say them ("Gauss-Seidel"), for the window title and the Solver panel; the
-// command line keeps radiometry's methodName() spelling ("gauss-seidel").
-#include "radiometry/solver/Solver.h"
+// command line keeps radiometry's methodName() spelling ("gauss-seidel"). Both come from the table.
+#include "radiometry/solver/SolverMethods.h"
 
 namespace radiant::app {
 
-constexpr const char* methodLabel(SolverMethod method) {
-    switch (method) {
-    case SolverMethod::Jacobi: return "Jacobi";
-    case SolverMethod::GaussSeidel: return "Gauss-Seidel";
-    case SolverMethod::Progressive: return "Progressive refinement";
-    case SolverMethod::Hierarchical: return "Hierarchical";
-    case SolverMethod::Importance: return "Importance-driven";
-    }
-    return "?";
-}
+/// Null-terminated: the table's labels are string literals.
+inline const char* methodLabel(SolverMethod method) { return methodInfo(method).label.data(); }
 
 } // namespace radiant::app

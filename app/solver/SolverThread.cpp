@@ -11,7 +11,6 @@
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/HierarchicalSolver.h"
-#include "radiometry/solver/ImportanceSolver.h"
 #include "radiometry/solver/WorkerPool.h"
 
 namespace radiant::app {
@@ -331,7 +330,7 @@ void SolverThread::ensureSolver(State& state) {
 }
 
 void SolverThread::publishOverlays(State& state, Snapshot& s) {
-    const auto* hierarchical = dynamic_cast<const HierarchicalSolver*>(state.solver.get());
+    const HierarchicalSolver* hierarchical = state.solver ? state.solver->hierarchy() : nullptr;
     if (!hierarchical) {
         state.linkSegments.reset();
         state.linkSolver = nullptr;
@@ -356,9 +355,9 @@ void SolverThread::publishOverlays(State& state, Snapshot& s) {
     }
     s.focusLinkSegments = state.focusSegments;
     s.focusLevels = state.focusLevels;
-    if (const auto* importance = dynamic_cast<const ImportanceSolver*>(hierarchical);
-        importance && importance->importance().size() == s.radiosity.size())
-        s.importance = std::make_shared<const std::vector<double>>(importance->importance());
+    if (const std::span<const double> importance = state.solver->importance();
+        !importance.empty() && importance.size() == s.radiosity.size())
+        s.importance = std::make_shared<const std::vector<double>>(importance.begin(), importance.end());
 }
 
 void SolverThread::publish(State& state) {

@@ -38,7 +38,9 @@ ImGuiLayer::ImGuiLayer(GLFWwindow* window, float uiScale) : scale_(std::clamp(ui
     ImGui::CreateContext();
     ImGuiIO& io = ImGui::GetIO();
     io.IniFilename = nullptr;  // the layout is the program's, not a file's beside the working directory
-    io.ConfigFlags |= ImGuiConfigFlags_NavEnableKeyboard;
+    // No keyboard navigation of the panels: with it, a focused panel claims every key
+    // (WantCaptureKeyboard), so a click on a slider killed the lecturer's Space, N and R, and Space
+    // would also press whichever button the navigation cursor rested on.
     if (!ImGui_ImplGlfw_InitForOpenGL(window, true) || !ImGui_ImplOpenGL3_Init("#version 330 core")) {
         ImGui::DestroyContext();
         throw RadiantError({"window", "Dear ImGui"}, "cannot initialise the GLFW/OpenGL 3 backends");
@@ -77,8 +79,20 @@ void ImGuiLayer::newFrame() {
     if (scale_ != appliedScale_) applyScale();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    if (mouseOverride_) {  // after the backend, which writes the real pointer's state
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = {mouseOverride_->x, mouseOverride_->y};
+        io.MouseDown[0] = mouseOverride_->leftDown;
+    }
     ImGui::NewFrame();
 }
+
+bool ImGuiLayer::keyboardClaimed() {
+    if (!ImGui::GetCurrentContext()) return false;
+    return ImGui::GetIO().WantTextInput || ImGui::IsAnyItemActive();
+}
+
+void ImGuiLayer::overrideMouse(std::optional<MouseOverride> mouse) { mouseOverride_ = mouse; }
 
 void ImGuiLayer::render() {
     ImGui::Render();

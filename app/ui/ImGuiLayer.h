@@ -2,6 +2,8 @@
 // Dear ImGui on a GLFW window: context, platform and GL backends, the lab's theme and its fonts.
 // The UI scale rebuilds the font atlas at the new pixel size (sharp text on a projector) and
 // rescales the style's spacing from the unscaled theme.
+#include <optional>
+
 struct GLFWwindow;
 
 namespace radiant::app {
@@ -13,6 +15,18 @@ public:
     ~ImGuiLayer();
     ImGuiLayer(const ImGuiLayer&) = delete;
     ImGuiLayer& operator=(const ImGuiLayer&) = delete;
+
+    /// The pointer as tests drive it (ImGui window coordinates), instead of the real one; nullopt
+    /// gives the real pointer back.
+    struct MouseOverride {
+        float x = 0, y = 0;
+        bool leftDown = false;
+    };
+    void overrideMouse(std::optional<MouseOverride> mouse);
+
+    /// True while the UI owns the keyboard: a text field is being edited or a widget is held (a
+    /// slider dragged). Everywhere else the lab's shortcuts act, whatever was clicked last.
+    [[nodiscard]] static bool keyboardClaimed();
 
     void newFrame();
     void render();
@@ -26,6 +40,7 @@ private:
 
     float scale_;
     float appliedScale_ = 0;
+    std::optional<MouseOverride> mouseOverride_;
 };
 
 } // namespace radiant::app

@@ -17,6 +17,11 @@ public:
     void update() {
         for (const auto& panel : panels_) panel->update();
     }
+    [[nodiscard]] bool busy() const {
+        for (const auto& panel : panels_)
+            if (panel->busy()) return true;
+        return false;
+    }
     /// Draws the sidebar; returns its width in ImGui (window) coordinates.
     float draw(const std::string& heading, const std::string& subheading);
     /// At the next draw, expands the panel titled `title` and collapses the others (empty: expand all).

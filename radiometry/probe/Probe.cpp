@@ -48,6 +48,7 @@ double distanceOutsideFace(const Face& face, const glm::dvec3& x) {
 struct VisibleFractions {
     double solidAngle = 1;  ///< weights |cos_y| / r^2 dA
     double formFactor = 1;  ///< weights cos_x cos_y / r^2 dA, front side only
+    double projected = 1;   ///< weights cos_x |cos_y| / r^2 dA, either side
 };
 
 VisibleFractions visibleFractions(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& polygon,
@@ -55,6 +56,7 @@ VisibleFractions visibleFractions(const glm::dvec3& x, const glm::dvec3& n, cons
                                   std::vector<PolygonSample>& samples) {
     stratifiedPolygonSamples(polygon, perSide, seed, samples);
     double solidAngleAll = 0, solidAngleVisible = 0, formFactorAll = 0, formFactorVisible = 0;
+    double projectedAll = 0, projectedVisible = 0;
     for (const PolygonSample& s : samples) {
         const glm::dvec3 d = s.point - x;
         const double r2 = glm::dot(d, d);
@@ -65,25 +67,29 @@ VisibleFractions visibleFractions(const glm::dvec3& x, const glm::dvec3& n, cons
         const double cosY = -glm::dot(polygon.normal, d) / r;
         const double wSolidAngle = s.area * std::abs(cosY) / r2;
         const double wFormFactor = s.area * cosX * std::max(0.0, cosY) / r2;
+        const double wProjected = s.area * cosX * std::abs(cosY) / r2;
         if (wSolidAngle <= 0 && wFormFactor <= 0) continue;
         const bool visible = !rays.occluded(x, s.point);
         solidAngleAll += wSolidAngle;
         formFactorAll += wFormFactor;
+        projectedAll += wProjected;
         if (visible) {
             solidAngleVisible += wSolidAngle;
             formFactorVisible += wFormFactor;
+            projectedVisible += wProjected;
         }
     }
     VisibleFractions f;
     if (solidAngleAll > 0) f.solidAngle = solidAngleVisible / solidAngleAll;
     if (formFactorAll > 0) f.formFactor = formFactorVisible / formFactorAll;
+    if (projectedAll > 0) f.projected = projectedVisible / projectedAll;
     return f;
 }
 
 glm::dvec3 unitNormal(const glm::dvec3& n) {
     const double length = glm::length(n);
     if (!(length > 0) || !std::isfinite(length))
-        throw RadiantError({"", "--normal"}, "the normal (" + formatPoint(n) + ") must be a finite non-zero vector");
+        throw RadiantError({"", "probe normal"}, "the normal (" + formatPoint(n) + ") must be a finite non-zero vector");
     return n / length;
 }
 
@@ -130,15 +136,15 @@ SurfacePoint Probe::locate(const glm::dvec3& x, const glm::dvec3& n) const {
         std::ostringstream message;
         message << "the point (" << formatPoint(x) << ") lies on no surface";
         if (!nearestName.empty()) message << " (nearest: '" << nearestName << "', " << nearestDistance << " m away)";
-        throw RadiantError({scene_.name, "--point"}, message.str());
+        throw RadiantError({scene_.name, "probe point"}, message.str());
     }
     if (bestAlignment <= 0)
-        throw RadiantError({scene_.name, "--normal"},
+        throw RadiantError({scene_.name, "probe normal"},
                            "the normal (" + formatPoint(n) + ") points into surface '" +
                                scene_.surfaces[best->surface].name + "' at (" + formatPoint(x) + ")");
     best->patch = locator_.find(best->surface, best->face, best->point);
     if (best->patch == PatchLocator::npos)
-        throw RadiantError({scene_.name, "--point"}, "surface '" + scene_.surfaces[best->surface].name +
+        throw RadiantError({scene_.name, "probe point"}, "surface '" + scene_.surfaces[best->surface].name +
                                                          "' has no patches at (" + formatPoint(x) + ")");
     return *best;
 }
@@ -188,30 +194,44 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
 
 TargetReading Probe::target(const SurfacePoint& at, const glm::dvec3& n, std::size_t surface) const {
     if (surface >= scene_.surfaces.size() || surface + 1 >= mesh_.surfaceFirstPatch.size())
-        throw RadiantError({scene_.name, "--target"}, "no surface number " + std::to_string(surface));
+        throw RadiantError({scene_.name, "probe target"}, "no surface number " + std::to_string(surface));
     const glm::dvec3 up = unitNormal(n);
     TargetReading reading;
     reading.surface = surface;
     reading.name = scene_.surfaces[surface].name;
     std::vector<PolygonSample> samples;
-    double solidAngle = 0, formFactor = 0;
+    std::vector<glm::dvec3> reversed;
+    double solidAngle = 0, formFactor = 0, projected = 0;
     for (std::size_t j = mesh_.surfaceFirstPatch[surface]; j < mesh_.surfaceFirstPatch[surface + 1]; ++j) {
         const PatchPolygon polygon = mesh_.polygon(j);
         const double omega = solidAngleAboveHorizon(at.point, up, polygon.corners()).value();
+        // Light leaves only a patch's front, so F counts front faces; the projected solid angle is
+        // geometry, integral |cos theta_x| d omega, and counts a patch seen from behind as well.
+        const bool frontFacing = glm::dot(polygon.normal, at.point - polygon.centroid) > 0;
         const double f = pointToPolygonFormFactor(at.point, up, polygon.corners());
-        reading.unoccludedSolidAngle += SolidAngle(omega);
-        reading.unoccludedFormFactor += f;
-        if (omega <= 0 && f <= 0) continue;
+        double pi_f = std::numbers::pi * f;
+        if (!frontFacing) {
+            reversed.assign(polygon.corners().rbegin(), polygon.corners().rend());
+            pi_f = std::numbers::pi * pointToPolygonFormFactor(at.point, up, reversed);
+        }
+        // Unoccluded: the front faces alone tile a closed target's silhouette once (its back faces
+        // would tile it again).
+        if (frontFacing) {
+            reading.unoccludedSolidAngle += SolidAngle(omega);
+            reading.unoccludedFormFactor += f;
+        }
+        if (omega <= 0 && pi_f <= 0) continue;
         VisibleFractions visible;
         if (rays_ != nullptr && options_.targetRaysPerSide > 0)
             visible = visibleFractions(at.point, up, polygon, *rays_, options_.targetRaysPerSide,
                                        mixBits(options_.seed ^ mixBits(j)), samples);
         solidAngle += omega * visible.solidAngle;
         formFactor += f * visible.formFactor;
+        projected += pi_f * visible.projected;
     }
     reading.solidAngle = SolidAngle(solidAngle);
     reading.formFactor = formFactor;
-    reading.projectedSolidAngle = SolidAngle(std::numbers::pi * formFactor);
+    reading.projectedSolidAngle = SolidAngle(projected);
     return reading;
 }
 

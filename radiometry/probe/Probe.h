@@ -9,8 +9,8 @@
 //         estimates the occluded integral. This is the gather of Wallace, Elmquist & Haines, "A Ray
 //         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point.
 //   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
-//   projected solid angle pi F(dx -> target) and form factor, each times its visible fraction
-//   (rays weighted by the solid-angle kernel |cos_j| / r^2, resp. the form-factor kernel).
+//   projected solid angle (integral of cos theta_x d omega) and form factor, each times its visible
+//   fraction (rays weighted by the kernel whose integral it corrects).
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -46,9 +46,12 @@ struct SurfacePoint {
 struct TargetReading {
     std::size_t surface = 0;
     std::string name;
-    SolidAngle solidAngle{};           ///< visible, above x's horizon (sr)
-    SolidAngle projectedSolidAngle{};  ///< visible: pi x formFactor (sr)
-    double formFactor = 0;             ///< visible F(dx -> target)
+    SolidAngle solidAngle{};           ///< visible, above x's horizon, faces seen from either side (sr)
+    /// Visible integral of cos theta_x d omega over the target, faces seen from either side (sr):
+    /// pi x formFactor when x sees only front faces.
+    SolidAngle projectedSolidAngle{};
+    double formFactor = 0;             ///< visible F(dx -> target): front faces only (light leaves fronts)
+    /// Without occluders, front faces only: a closed target's silhouette counted once.
     SolidAngle unoccludedSolidAngle{};
     double unoccludedFormFactor = 0;
 };

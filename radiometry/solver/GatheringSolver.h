@@ -26,7 +26,7 @@ public:
 
     [[nodiscard]] const FormFactorMatrix& matrix() const { return *matrix_; }
     /// Memory held: the matrix and the per-patch arrays.
-    [[nodiscard]] std::size_t bytes() const;
+    [[nodiscard]] std::size_t bytes() const override;
 
 protected:
     /// One sweep over every patch; returns sum_i A_i |r_i| per band (W) for the new solution, with

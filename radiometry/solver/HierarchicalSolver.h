@@ -59,7 +59,8 @@ public:
     /// deepest one under its centroid).
     [[nodiscard]] std::span<const ElementIndex> patchElements() const { return patchElement_; }
     /// Heap bytes held by elements, links and the solver's per-element arrays.
-    [[nodiscard]] std::size_t bytes() const;
+    [[nodiscard]] std::size_t bytes() const override;
+    [[nodiscard]] const HierarchicalSolver* hierarchy() const override { return this; }
     /// Visibility rays cast by refinement so far.
     [[nodiscard]] std::size_t raysCast() const;
 

@@ -26,7 +26,7 @@ public:
     void reset() override;
 
     /// Per patch: importance Y (1/m^2), the direct share r plus what reaches the eye by reflection.
-    [[nodiscard]] const std::vector<double>& importance() const { return patchImportance_; }
+    [[nodiscard]] std::span<const double> importance() const override { return patchImportance_; }
     /// Per patch: emitted importance r (1/m^2), the share of eye rays landing on it per unit area.
     [[nodiscard]] const std::vector<double>& emittedImportance() const { return patchEmittedImportance_; }
     /// Per element importance Y (1/m^2), indexed like elements().

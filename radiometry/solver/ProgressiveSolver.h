@@ -59,7 +59,7 @@ public:
     /// The group shot by the last step, or -1.
     [[nodiscard]] std::int64_t lastShooterGroup() const { return lastGroup_; }
     /// Memory held by the per-patch and per-group arrays (not the shot kernel's ray caster).
-    [[nodiscard]] std::size_t bytes() const {
+    [[nodiscard]] std::size_t bytes() const override {
         return materials_.size() * (sizeof(double) * 2 + sizeof(Rgb) * 5 + sizeof(std::uint32_t)) +
                shooters_.size() * (sizeof(std::uint32_t) * 3 + sizeof(PatchPolygon) + sizeof(double));
     }

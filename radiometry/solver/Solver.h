@@ -5,6 +5,7 @@
 //   B_i = E_i + rho_i * sum_j F_ij B_j      (per band; F_ij from patch i to patch j)
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,13 +14,14 @@
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/solver/SolverMethods.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
 
-enum class SolverMethod { Jacobi, GaussSeidel, Progressive, Hierarchical, Importance };
+class HierarchicalSolver;
 
-/// "jacobi", "gauss-seidel", "progressive", "hierarchical", "importance".
+/// The method's command-line name (the table in SolverMethods.h): "gauss-seidel".
 std::string_view methodName(SolverMethod method);
 /// Parses a method name; throws RadiantError naming the value and the accepted names.
 SolverMethod parseMethod(std::string_view name);
@@ -66,9 +68,17 @@ public:
     virtual void reset() = 0;
     /// Statistics of the last step (iteration 0 before the first).
     [[nodiscard]] virtual const IterationStats& lastStats() const = 0;
+
+    // Capabilities: what a method has beyond the solution, asked here instead of by casting.
+    /// Bytes the solver holds (form factors, links, elements); 0 when it does not count them.
+    [[nodiscard]] virtual std::size_t bytes() const { return 0; }
+    /// The element hierarchy and its links, for methods that refine one; null otherwise.
+    [[nodiscard]] virtual const HierarchicalSolver* hierarchy() const { return nullptr; }
+    /// Per-patch importance (view-dependent methods); empty otherwise.
+    [[nodiscard]] virtual std::span<const double> importance() const { return {}; }
 };
 
-/// Builds a solver for the meshed scene. Expensive set-up (form-factor matrix, initial linking)
+/// Builds a solver for the meshed scene with the method's factory from the table. Expensive set-up (form-factor matrix, initial linking)
 /// happens here, reporting to `progress` and honouring its cancellation.
 std::unique_ptr<Solver> makeSolver(SolverMethod method, const Scene& scene, const PatchMesh& mesh,
                                    const SolverOptions& options = {}, Progress* progress = nullptr);

@@ -10,12 +10,14 @@
 #include <filesystem>
 #include <functional>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
 
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
+#include <imgui.h>
 
 #include "app/Lab.h"
 #include "app/solver/SolverThread.h"
@@ -259,6 +261,89 @@ TEST_CASE("keyboard shortcuts drive the solve and the display") {
     frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration > 0; });
     lab.pressKey(GLFW_KEY_ESCAPE);
     CHECK(lab.shouldClose());
+}
+
+TEST_CASE("after a click on a panel widget, Space, N, R, F and F12 still act through the window's key callbacks") {
+    requireDisplay();
+    LabOptions options = coarseCornell();
+    options.showPanels = true;
+    options.width = 1600;
+    options.height = 1000;
+    Lab lab(options);
+    waitForSolver(lab);
+
+    // A widget in the sidebar: the first point down its middle that ImGui reports hovering an item.
+    std::optional<glm::vec2> widget;
+    for (float y = 30; y < 600 && !widget; y += 6) {
+        lab.overrideMouse(glm::vec2{120, y});
+        lab.frame();
+        if (ImGui::IsAnyItemHovered()) widget = glm::vec2{120, y};
+    }
+    REQUIRE(widget);
+    lab.overrideMouse(widget, true);
+    lab.frame();
+    CHECK(ImGui::IsAnyItemActive());  // the click landed on a widget
+    lab.overrideMouse(widget, false);
+    lab.frame();
+    lab.frame();
+    lab.overrideMouse(std::nullopt);
+    CHECK_FALSE(ImGui::IsAnyItemActive());
+
+    // Keys enter as GLFW delivers them: ImGui's key callback first, chaining to the lab's.
+    GLFWwindow* window = glfwGetCurrentContext();
+    REQUIRE(window);
+    const GLFWkeyfun callbacks = glfwSetKeyCallback(window, nullptr);
+    glfwSetKeyCallback(window, callbacks);
+    const bool chained = callbacks != nullptr;
+    REQUIRE(chained);
+    const auto press = [&](int key) {
+        callbacks(window, key, glfwGetKeyScancode(key), GLFW_PRESS, 0);
+        lab.frame();
+        callbacks(window, key, glfwGetKeyScancode(key), GLFW_RELEASE, 0);
+        lab.frame();
+    };
+    press(GLFW_KEY_N);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 1 && !s.running; });
+    press(GLFW_KEY_R);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration == 0 && s.history.empty(); });
+    press(GLFW_KEY_SPACE);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.stats.iteration > 0; });
+    const auto mode = lab.display().colourMode;
+    press(GLFW_KEY_F);
+    CHECK(lab.display().colourMode != mode);
+
+    const auto directory = std::filesystem::temp_directory_path() / "radiant-test-keys";
+    std::filesystem::create_directories(directory);
+    const auto previous = std::filesystem::current_path();
+    std::filesystem::current_path(directory);  // F12 saves into the working directory
+    press(GLFW_KEY_F12);
+    std::filesystem::current_path(previous);
+    INFO("status: " << lab.statusMessage());
+    CHECK(lab.statusMessage().rfind("saved ", 0) == 0);
+    std::filesystem::remove_all(directory);
+}
+
+TEST_CASE("an idle, converged lab stops drawing until input arrives") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    lab.send(command::Run{});
+    waitForSolver(lab);
+    frameUntil(lab, [](const app::Snapshot& s) { return !s.running && s.stats.iteration > 0; });
+    // Input moments ago keeps frames coming; then the lab settles.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (lab.changing() && std::chrono::steady_clock::now() < deadline) lab.frame();
+    REQUIRE_FALSE(lab.changing());
+    const std::uint64_t frames = lab.frameCount();
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < 3; ++i) lab.frameWhenNeeded(0.2);
+    const double waited = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    CHECK(lab.frameCount() == frames + 3);
+    CHECK(waited >= 3 * 0.2 * 0.9);  // each frame waited for the timeout: nothing woke it
+    const std::size_t iterations = lab.snapshot()->stats.iteration;
+    lab.send(command::Step{1});  // a command makes a new snapshot: frames come again
+    const auto stepped = [&](const app::Snapshot& s) { return s.stats.iteration == iterations + 1; };
+    frameUntil(lab, stepped);
+    CHECK(lab.frameCount() > frames + 3);
 }
 
 } // TEST_SUITE

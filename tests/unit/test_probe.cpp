@@ -125,6 +125,58 @@ TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner
         }
 }
 
+TEST_CASE("a closed block counts its silhouette once, and a target seen from behind has a projected solid angle") {
+    // A unit-square "receiver" at z = 0 facing +z; a closed cube [-0.5, 0.5]^2 x [h, h + 1] with
+    // outward faces; a "panel" square at z = h facing +z, which the origin sees from behind.
+    const double h = 1.0;
+    Scene scene;
+    scene.name = "block over a point";
+    scene.materials = {{"grey", Rgb(0.5), ExitanceRgb{}}};
+    scene.surfaces.push_back(
+        {"receiver", 0, {rectangleFace({{{-0.5, -0.5, 0}, {0.5, -0.5, 0}, {0.5, 0.5, 0}, {-0.5, 0.5, 0}}})}, "test"});
+    const double a = 0.5, z0 = h, z1 = h + 1;
+    Surface block{"block", 0, {}, "test"};
+    block.faces.push_back(rectangleFace({{{-a, -a, z0}, {-a, a, z0}, {a, a, z0}, {a, -a, z0}}}));  // bottom, -z
+    block.faces.push_back(rectangleFace({{{-a, -a, z1}, {a, -a, z1}, {a, a, z1}, {-a, a, z1}}}));  // top, +z
+    block.faces.push_back(rectangleFace({{{a, -a, z0}, {a, a, z0}, {a, a, z1}, {a, -a, z1}}}));    // +x
+    block.faces.push_back(rectangleFace({{{-a, -a, z0}, {-a, -a, z1}, {-a, a, z1}, {-a, a, z0}}}));  // -x
+    block.faces.push_back(rectangleFace({{{-a, a, z0}, {-a, a, z1}, {a, a, z1}, {a, a, z0}}}));    // +y
+    block.faces.push_back(rectangleFace({{{-a, -a, z0}, {a, -a, z0}, {a, -a, z1}, {-a, -a, z1}}}));  // -y
+    scene.surfaces.push_back(block);
+    for (const Face& face : scene.surfaces[1].faces)  // outward: away from the cube's centre
+        REQUIRE(glm::dot(face.normal, face.vertices[0] - glm::dvec3(0, 0, h + a)) > 0);
+    const PatchMesh mesh = meshScene(scene, meshing(0.02));
+    const RayCaster rays(scene);
+    const Probe probe(scene, mesh, &rays);
+    const std::vector<Rgb> dark(mesh.size(), Rgb(0.0));
+    const double silhouetteOmega = 4 * cornerSolidAngle(a, a, h);
+    const double silhouetteF = 4 * cornerFormFactor(a, a, h);
+    // From the origin the block's bottom face is its whole silhouette.
+    const ProbeReading r = probe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), dark, std::size_t{1});
+    REQUIRE(r.target);
+    CHECK(r.target->unoccludedSolidAngle.value() == doctest::Approx(silhouetteOmega).epsilon(1e-6).scale(0));
+    CHECK(r.target->unoccludedFormFactor == doctest::Approx(silhouetteF).epsilon(1e-6).scale(0));
+    CHECK(r.target->solidAngle.value() == doctest::Approx(silhouetteOmega).epsilon(1e-3).scale(0));
+    CHECK(r.target->projectedSolidAngle.value() == doctest::Approx(kPi * silhouetteF).epsilon(1e-3).scale(0));
+
+    // The same square seen from behind: light cannot leave its back, so F = 0, but the point still
+    // sees it: solid angle and projected solid angle as for its front.
+    Scene behind = parallelSquares(h);
+    behind.surfaces[1].name = "panel";
+    behind.surfaces[1].faces[0] = rectangleFace({{{-a, -a, h}, {a, -a, h}, {a, a, h}, {-a, a, h}}});  // faces +z
+    const PatchMesh behindMesh = meshScene(behind, meshing(0.02));
+    const RayCaster behindRays(behind);
+    const Probe behindProbe(behind, behindMesh, &behindRays);
+    const ProbeReading b =
+        behindProbe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), std::vector<Rgb>(behindMesh.size(), Rgb(0.0)),
+                            std::size_t{1});
+    REQUIRE(b.target);
+    CHECK(b.target->formFactor == 0.0);
+    CHECK(b.target->unoccludedFormFactor == 0.0);
+    CHECK(b.target->solidAngle.value() == doctest::Approx(silhouetteOmega).epsilon(1e-6).scale(0));
+    CHECK(b.target->projectedSolidAngle.value() == doctest::Approx(kPi * silhouetteF).epsilon(1e-6).scale(0));
+}
+
 TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
     // Seen from the origin, a blocker edge at x = e, height h/2 projects to x = 2e on the emitter:
     // the visible part is [2e, 0.5] x [-0.5, 0.5].
