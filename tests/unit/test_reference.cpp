@@ -7,6 +7,11 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <fstream>
+#include <sys/wait.h>
+#include <unistd.h>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -14,6 +19,7 @@
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
@@ -283,6 +289,36 @@ TEST_CASE("a point on no surface, a zero normal and a normal facing away are err
     CHECK(cornell.surfaces[floor.surface].name == "floor");
     CHECK(floor.point.y == 0.0);
     CHECK(floor.normal.y == doctest::Approx(1).scale(0));
+}
+
+TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error; bad input exits 2") {
+    // The built-in: a black emitter [0,1]^2 at y = 0 (exitance 1) and a receiver of rho 0.5 at y = 1.
+    const std::string output = "/tmp/radiant-test-reference-" + std::to_string(::getpid()) + ".json";
+    const std::string command = std::string(RADIANT_BINARY) +
+                                " reference parallel-plates --point 0.5,1,0.5 --normal 0,-1,0 --samples 200000 --json " +
+                                output;
+    REQUIRE(std::system(command.c_str()) == 0);
+    std::ifstream in(output);
+    const nlohmann::json j = nlohmann::json::parse(in);
+    std::remove(output.c_str());
+    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);
+    CHECK(j["surface"] == "receiver");
+    CHECK(j["samples"] == 200000);
+    for (int band = 0; band < 3; ++band) {
+        const double e = j["irradiance_W_m2"][band].get<double>();
+        const double se = j["standard_error_W_m2"]["irradiance_W_m2"][band].get<double>();
+        checkWithin(e, se, F, 4, 0.003);
+        CHECK(j["radiosity_W_m2"][band].get<double>() == doctest::Approx(0.5 * e).scale(0).epsilon(1e-12));
+    }
+    const auto exitStatus = [](const std::string& arguments) {
+        const int status = std::system((std::string(RADIANT_BINARY) + " reference " + arguments + " 2>/dev/null").c_str());
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    };
+    CHECK(exitStatus("parallel-plates --point 0.5,0.5,0.5 --normal 0,-1,0") == 2);    // on no surface
+    CHECK(exitStatus("parallel-plates --point 0.5,1,0.5 --normal 0,1,0") == 2);       // the receiver's back
+    CHECK(exitStatus("parallel-plates --point 0.5,1 --normal 0,-1,0") == 2);          // two numbers
+    CHECK(exitStatus("parallel-plates --point 0.5,1,0.5 --normal 0,-1,0 --seconds 0") == 2);
+    CHECK(exitStatus("parallel-plates --point 0.5,1,0.5 --normal 0,-1,0 --samples 1") == 2);
 }
 
 } // TEST_SUITE
