@@ -7,6 +7,8 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <chrono>
+#include <thread>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -21,6 +23,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/panels/PathTracedReading.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -289,6 +292,43 @@ TEST_CASE("a point on no surface, a zero normal and a normal facing away are err
     CHECK(cornell.surfaces[floor.surface].name == "floor");
     CHECK(floor.point.y == 0.0);
     CHECK(floor.normal.y == doctest::Approx(1).scale(0));
+}
+
+TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and stops on request, and reports a back face") {
+    const auto scene = std::make_shared<const Scene>(makeParallelPlates());
+    const auto rays = std::make_shared<const RayCaster>(*scene);
+    const auto waitUntilDone = [](const app::PathTracedReading& reading) {
+        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        app::PathTracedReading::State state = reading.state();
+        while (state.refining && std::chrono::steady_clock::now() < deadline) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(5));
+            state = reading.state();
+        }
+        return state;
+    };
+    app::PathTracedReading reading;
+    CHECK_FALSE(reading.state().estimate);
+    reading.start(scene, rays, {0.5, 1, 0.5}, {0, -1, 0});
+    const app::PathTracedReading::State done = waitUntilDone(reading);
+    REQUIRE(done.estimate);
+    CHECK_FALSE(done.refining);
+    CHECK(done.error.empty());
+    CHECK(done.estimate->relativeStandardError() <= app::PathTracedReading::kTargetRelativeError);
+    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);  // the built-in emitter's exitance is 1 W/m^2
+    for (int band = 0; band < 3; ++band)
+        checkWithin(done.estimate->irradiance.value()[band], done.estimate->irradianceStandardError[band], F, 4, 0.001);
+
+    // A restart forgets the old estimate; stopping at once joins the worker and leaves nothing behind.
+    reading.start(scene, rays, {0.25, 1, 0.75}, {0, -1, 0});
+    reading.stop();
+    CHECK_FALSE(reading.state().estimate);
+    CHECK(reading.scene() == nullptr);
+
+    // The receiver's back: the worker reports why there is no estimate.
+    reading.start(scene, rays, {0.5, 1, 0.5}, {0, 1, 0});
+    const app::PathTracedReading::State refused = waitUntilDone(reading);
+    CHECK_FALSE(refused.estimate);
+    CHECK(refused.error.find("degrees from the front of surface 'receiver'") != std::string::npos);
 }
 
 TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error; bad input exits 2") {
