@@ -110,7 +110,9 @@ TEST_CASE("the furnace: B = M / (1 - rho) and E = B at every point, per band") {
     const std::vector<std::pair<glm::dvec3, glm::dvec3>> points = {
         {{1.0, 0.0, 0.75}, {0, 1, 0}}, {{0.03, 0.0, 0.02}, {0, 1, 0}}, {{2.0, 0.4, 1.1}, {-1, 0, 0}},
         {{0.6, 1.0, 0.3}, {0, -1, 0}}};
-    for (const auto& [x, n] : points) {
+    for (const auto& point : points) {
+        const glm::dvec3& x = point.first;  // not a structured binding: CAPTURE's lambda needs a variable
+        const glm::dvec3& n = point.second;
         CAPTURE(x);
         const ReferenceEstimate e = estimateAt(furnace, rays, x, n, 0.004);
         for (int band = 0; band < 3; ++band) {
@@ -240,7 +242,9 @@ TEST_CASE("agrees with Gauss-Seidel on fine meshes where B is smooth, within 3 s
     const std::vector<std::pair<glm::dvec3, glm::dvec3>> points = {
         {{0.5, 0, 0.5}, {0, 1, 0}}, {{0.3, 0, 0.7}, {0, 1, 0}}, {{0, 0.5, 0.5}, {1, 0, 0}},
         {{0.5, 0.7, 1}, {0, 0, -1}}, {{0.5, 1, 0.5}, {0, -1, 0}}};
-    for (const auto& [x, n] : points) {
+    for (const auto& point : points) {
+        const glm::dvec3& x = point.first;  // not a structured binding: CAPTURE's lambda needs a variable
+        const glm::dvec3& n = point.second;
         CAPTURE(x);
         const ReferenceEstimate e = estimateAt(cube, rays, x, n, 0.003);
         const ProbeReading atCoarse = coarseProbe.measure(x, n, coarse);
