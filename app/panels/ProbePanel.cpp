@@ -2,6 +2,9 @@
 
 #include <imgui.h>
 
+#include <cstdio>
+#include <string>
+
 #include <glm/geometric.hpp>
 
 #include "app/solver/ThreadPriority.h"
@@ -36,6 +39,26 @@ void scalarRow(const char* label, const char* format, double value) {
     ImGui::Text(format, value);
 }
 
+/// "+1.2%": how far the solver's value lies from the reference, relative to the reference.
+std::string percentDifference(double solver, double reference) {
+    if (!(reference > 0)) return "n/a";
+    char text[32];
+    std::snprintf(text, sizeof text, "%+.1f%%", 100 * (solver - reference) / reference);
+    return text;
+}
+
+/// Same reflectances and exitances: a new Scene object from a no-op edit needs no new path tracing.
+bool sameMaterials(const Scene& a, const Scene& b) {
+    if (a.materials.size() != b.materials.size() || a.surfaces.size() != b.surfaces.size()) return false;
+    for (std::size_t m = 0; m < a.materials.size(); ++m)
+        if (a.materials[m].reflectance != b.materials[m].reflectance ||
+            a.materials[m].exitance.value() != b.materials[m].exitance.value())
+            return false;
+    for (std::size_t s = 0; s < a.surfaces.size(); ++s)
+        if (a.surfaces[s].material != b.surfaces[s].material) return false;
+    return true;
+}
+
 std::optional<std::size_t> firstEmitter(const Scene& scene) {
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
         if (scene.materials.at(scene.surfaces[s].material).emits()) return s;
@@ -48,6 +71,7 @@ ProbePanel::ProbePanel(LiveSolve& live) : live_(live) {}
 
 ProbePanel::~ProbePanel() {
     if (job_.valid()) job_.wait();
+    pathTraced_.stop();
 }
 
 bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
@@ -63,6 +87,7 @@ bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     reading_.reset();
     error_.clear();
     dirty_ = true;
+    pathTracedCurrent_ = false;
     return true;
 }
 
@@ -86,7 +111,10 @@ void ProbePanel::update() {
     if (pick_ && pick_->meshGeneration != snapshot.meshGeneration) {
         pick_.reset();  // the scene or its mesh changed under the point
         reading_.reset();
+        pathTraced_.stop();
+        pathTracedCurrent_ = false;
     }
+    followPathTraced(live_.current);
     if (snapshot.scene && targetMesh_ != snapshot.meshGeneration) {
         target_ = firstEmitter(*snapshot.scene);
         targetMesh_ = snapshot.meshGeneration;
@@ -100,7 +128,19 @@ void ProbePanel::update() {
 }
 
 bool ProbePanel::busy() const {
+    // Not the path tracer: it refines for seconds, and the idle lab's half-second wake-ups show it.
     return job_.valid() || (pick_ && (dirty_ || live_.snapshot().generation != readingGeneration_));
+}
+
+void ProbePanel::followPathTraced(const std::shared_ptr<const Snapshot>& snapshot) {
+    if (!pick_ || !snapshot->scene || !picker_ || picker_->meshGeneration != snapshot->meshGeneration) return;
+    const Scene* running = pathTraced_.scene();
+    if (pathTracedCurrent_ && running && (running == snapshot->scene.get() || sameMaterials(*running, *snapshot->scene)))
+        return;
+    // The worker keeps the picker (and so its rays) alive through an aliasing pointer.
+    pathTraced_.start(snapshot->scene, std::shared_ptr<const RayCaster>(picker_, &picker_->rays), pick_->point,
+                      pick_->normal);
+    pathTracedCurrent_ = true;
 }
 
 void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
@@ -188,6 +228,42 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Emitted exitance plus reflected irradiance: equals B once the solve has converged\n"
                           "(up to the patch discretisation: B is interpolated, E is gathered exactly)");
+    drawPathTraced(reading);
+}
+
+void ProbePanel::drawPathTraced(const ProbeReading& reading) {
+    const PathTracedReading::State state = pathTraced_.state();
+    ImGui::Spacing();
+    ImGui::TextDisabled("Path-traced reference (independent check)");
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The rendering equation solved at this point by Monte Carlo path tracing: no patches,\n"
+                          "no form factors, nothing shared with the radiosity solver but the scene and its rays.\n"
+                          "It converges to the exact answer, so 'solver vs path-traced' is the error of the method,\n"
+                          "mesh and convergence you chose. +- is one standard error of the path tracer's estimate.");
+    if (!state.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
+        ImGui::TextWrapped("%s", state.error.c_str());
+        ImGui::PopStyleColor();
+        return;
+    }
+    if (!state.estimate) {
+        ImGui::TextDisabled("tracing...");
+        return;
+    }
+    const ReferenceEstimate& e = *state.estimate;
+    const auto differenceRow = [](const char* label, const Rgb& solver, const Rgb& reference) {
+        ImGui::TextDisabled("%s", label);
+        ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
+        ImGui::Text("%s  %s  %s", percentDifference(solver.x, reference.x).c_str(),
+                    percentDifference(solver.y, reference.y).c_str(), percentDifference(solver.z, reference.z).c_str());
+    };
+    row("B traced", "W/m\xC2\xB2", e.radiosity.value());
+    row("E traced", "W/m\xC2\xB2", e.irradiance.value());
+    ImGui::TextDisabled("solver vs path-traced:");
+    differenceRow("B", reading.radiosity.value(), e.radiosity.value());
+    differenceRow("E", reading.irradiance.value(), e.irradiance.value());
+    ImGui::TextDisabled("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
+                        static_cast<double>(e.samples), state.refining ? ", refining" : "");
 }
 
 void ProbePanel::drawTarget(const Scene& scene) {

@@ -3,6 +3,8 @@
 // gathered at that exact point, the reflectance, and for a chosen target surface its solid angle,
 // projected solid angle and form factor (radiometry/probe/Probe.h). The readings follow the solve:
 // they are recomputed on a worker when a newer snapshot arrives, at most a few times a second.
+// Beside them, the same point path-traced (PathTracedReading.h): an independent reference that
+// shows the discretisation error of the method chosen.
 #include <chrono>
 #include <cstdint>
 #include <future>
@@ -13,6 +15,7 @@
 #include <glm/vec3.hpp>
 
 #include "app/panels/Panel.h"
+#include "app/panels/PathTracedReading.h"
 #include "app/solver/LiveSolve.h"
 #include "radiometry/probe/Probe.h"
 
@@ -66,6 +69,9 @@ private:
     void startMeasuring(std::chrono::steady_clock::time_point now);
     void drawReadings(const Scene& scene, const ProbeReading& reading);
     void drawTarget(const Scene& scene);
+    void drawPathTraced(const ProbeReading& reading);
+    /// Starts the path tracer at the pick, or restarts it when the materials changed under it.
+    void followPathTraced(const std::shared_ptr<const Snapshot>& snapshot);
 
     LiveSolve& live_;
     std::shared_ptr<const Picker> picker_;  ///< ray caster of the shown scene's geometry
@@ -79,6 +85,8 @@ private:
     bool dirty_ = false;  ///< the pick or target changed since the last measurement started
     std::future<Measured> job_;
     std::chrono::steady_clock::time_point lastStart_{};
+    PathTracedReading pathTraced_;  ///< last: its worker reads picker_'s rays
+    bool pathTracedCurrent_ = false;  ///< pathTraced_ runs at pick_
 };
 
 } // namespace radiant::app

@@ -1,0 +1,71 @@
+#include "app/panels/PathTracedReading.h"
+
+#include <algorithm>
+#include <exception>
+#include <utility>
+
+#include "app/solver/ThreadPriority.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/reference/PathTracer.h"
+#include "radiometry/reference/ReferencePoint.h"
+
+namespace radiant::app {
+
+void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayCaster> rays,
+                              const glm::dvec3& point, const glm::dvec3& normal) {
+    stop();
+    scene_ = scene;
+    shared_ = std::make_shared<Shared>();
+    shared_->state.refining = true;
+    worker_ = std::jthread([shared = shared_, scene = std::move(scene), rays = std::move(rays), point,
+                            normal](std::stop_token stopToken) {
+        yieldToTheDisplay();  // the helper threads of each batch inherit the idle priority
+        const auto publish = [&](auto&& change) {
+            const std::lock_guard lock(shared->mutex);
+            change(shared->state);
+        };
+        try {
+            const ReferencePoint at = locateReferencePoint(*scene, point, normal);
+            const PathTracer tracer(*scene, *rays);
+            ReferenceRunOptions options;
+            // A round is 512 paths per core, a few milliseconds: a new pick (which joins this
+            // worker on the window's thread) never waits long.
+            options.samplesPerBatch = 512;
+            const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
+            options.threads = threads;
+            ReferenceRun run(tracer, at, options);
+            for (;;) {
+                run.addBatches(threads);
+                const ReferenceEstimate estimate = run.estimate();
+                const bool done = estimate.samples >= 4096 && estimate.relativeStandardError() <= kTargetRelativeError;
+                publish([&](State& state) {
+                    state.estimate = estimate;
+                    state.refining = !done;
+                });
+                if (done || stopToken.stop_requested()) break;
+            }
+        } catch (const std::exception& e) {
+            publish([&](State& state) {
+                state.error = e.what();
+                state.refining = false;
+            });
+        }
+    });
+}
+
+void PathTracedReading::stop() {
+    if (worker_.joinable()) {
+        worker_.request_stop();
+        worker_.join();
+    }
+    shared_.reset();
+    scene_.reset();
+}
+
+PathTracedReading::State PathTracedReading::state() const {
+    if (!shared_) return {};
+    const std::lock_guard lock(shared_->mutex);
+    return shared_->state;
+}
+
+} // namespace radiant::app
