@@ -4,9 +4,9 @@
 // window's main thread and llvmpipe's rasterisers want both cores every frame; a background thread at
 // normal priority takes one from them and frames wait. SCHED_IDLE, the earlier policy, kept frames
 // best (bench frames, 20k patches, 1600 x 1000, back to back, solver running: p99 31-35 ms, 41-44 ms at
-// nice +10) but let any busy program stop the solve: with two nice-0 processes on the two cores, the
+// nice +10) but let a busy program stop the solve: with two nice-0 processes in the lab's session, the
 // lab's Cornell box at 1487 patches had not finished its form factors after 120 s at SCHED_IDLE,
-// converged in 57 and 85 s at nice 10 and in 30 s at nice 5 (21.8-24.5 s at nice 10 without them;
+// converged in 57-93 s at nice 10 and in 30 and 42 s at nice 5 (22-32 s at nice 10 without them;
 // bench frames, issue #17). Nice 10 is the compromise: a nice-0 drawing thread outweighs it about
 // ten to one when both want a core, and it still gets about a tenth of a core from any nice-0 program.
 #include <string>
