@@ -163,6 +163,11 @@ void SolverThread::waitUntilIdle() {
     idle_.wait(lock, [&] { return queue_.empty() && !workerBusy_; });
 }
 
+SolverThread::Heartbeat SolverThread::heartbeat() const {
+    return {commandsTaken_.load(std::memory_order_relaxed), generationPublished_.load(std::memory_order_relaxed),
+            lastCommand_.load(std::memory_order_relaxed)};
+}
+
 void SolverThread::workerLoop(const std::stop_token& stop) {
     yieldToTheDisplay();
     // The shared pool's helpers inherit the policy of the thread that starts them: started here, they
@@ -184,6 +189,8 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
             if (!queue_.empty()) {
                 next = std::move(queue_.front());
                 queue_.pop_front();
+                lastCommand_.store(next->index(), std::memory_order_relaxed);
+                commandsTaken_.fetch_add(1, std::memory_order_relaxed);
             }
             workerBusy_ = true;
         }
@@ -394,6 +401,7 @@ void SolverThread::publish(State& state) {
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
     publishOverlays(state, *s);
+    generationPublished_.store(s->generation, std::memory_order_relaxed);
     std::shared_ptr<const Snapshot> next(std::move(s));
     {
         std::lock_guard lock(publishedMutex_);

@@ -5,6 +5,7 @@
 // newer command makes them pointless (another scene, mesh or method).
 #include <atomic>
 #include <condition_variable>
+#include <cstdint>
 #include <deque>
 #include <functional>
 #include <memory>
@@ -39,6 +40,15 @@ public:
     /// running; for tests and the command line, never for the UI.
     void waitUntilIdle();
 
+    /// What a watchdog reads to tell a slow worker from a stuck one: both counts grow while the
+    /// worker makes progress, however slowly. Relaxed reads; nothing waits on them.
+    struct Heartbeat {
+        std::uint64_t commandsTaken = 0;       ///< off the queue, since the thread started
+        std::uint64_t generationPublished = 0; ///< the newest snapshot's generation
+        std::size_t lastCommand = std::variant_npos;  ///< SolverCommand::index() of the last one taken
+    };
+    [[nodiscard]] Heartbeat heartbeat() const;
+
 private:
     struct State;
     void workerLoop(const std::stop_token& stop);
@@ -54,6 +64,9 @@ private:
     SolverFactory factory_;
     Progress progress_;
     std::atomic<SolverActivity> activity_{SolverActivity::Idle};
+    std::atomic<std::uint64_t> commandsTaken_{0};
+    std::atomic<std::uint64_t> generationPublished_{0};
+    std::atomic<std::size_t> lastCommand_{std::variant_npos};
 
     mutable std::mutex queueMutex_;
     std::condition_variable_any queueChanged_;

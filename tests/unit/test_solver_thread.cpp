@@ -19,6 +19,7 @@
 #include "app/panels/MaterialsPanel.h"
 #include "app/solver/LiveSolve.h"
 #include "app/solver/SolverThread.h"
+#include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/scene/SceneLibrary.h"
@@ -80,7 +81,7 @@ SolverFactory furnaceFactory(double rho, double e) {
 
 TEST_SUITE("solver thread") {
 
-TEST_CASE("the worker yields to the display: SCHED_IDLE by default, the nice value RADIANT_SOLVER_NICE asks for") {
+TEST_CASE("the worker yields to the display: a modest nice value by default, the nice value or SCHED_IDLE RADIANT_SOLVER_NICE asks for") {
     // The factory runs on the worker thread: it reads that thread's own policy and nice value.
     struct Seen {
         std::atomic<int> policy{-1};
@@ -103,6 +104,14 @@ TEST_CASE("the worker yields to the display: SCHED_IDLE by default, the nice val
     const std::string saved = asked ? asked : "";
     {
         unsetenv("RADIANT_SOLVER_NICE");
+        Seen seen;
+        SolverThread solver({}, recordingFactory(seen));
+        observe(solver, seen);
+        CHECK(seen.policy.load() == SCHED_OTHER);
+        CHECK(seen.nice.load() == kBackgroundNice);
+    }
+    {
+        setenv("RADIANT_SOLVER_NICE", "idle", 1);
         Seen seen;
         SolverThread solver({}, recordingFactory(seen));
         observe(solver, seen);
