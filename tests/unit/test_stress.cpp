@@ -1,3 +1,4 @@
+// ctest-labels: threads;stress
 // Concurrency stress: a seeded random storm of commands to a SolverThread running the real solvers on
 // a coarse Cornell box, while a reader takes snapshots as fast as it can and checks each one. Run
 // under ThreadSanitizer by scripts/test (label "threads"); see docs/RELIABILITY.md.
