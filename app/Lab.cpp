@@ -26,6 +26,7 @@
 #include "app/solver/SolverThread.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
+#include "app/ui/Shortcuts.h"
 #include "app/ui/Sidebar.h"
 #include "app/ui/StatusBar.h"
 #include "app/ui/Theme.h"
@@ -95,9 +96,9 @@ struct Lab::State {
             // clicked does not (the lecturer's presenter sends Space and Page Down whatever was
             // clicked last).
             if (ImGuiLayer::keyboardClaimed()) return;
-            // Held keys repeat only where repeating makes sense: stepping.
-            if (action == GLFW_REPEAT && key != GLFW_KEY_N && key != GLFW_KEY_RIGHT) return;
-            self->onKey(key);
+            const std::optional<Shortcut> shortcut = shortcutForKey(key);
+            if (!shortcut || (action == GLFW_REPEAT && !shortcut->repeats)) return;
+            self->onAction(shortcut->action);
         });
         glfwSetDropCallback(window.handle(), [](GLFWwindow* w, int count, const char** paths) {
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
@@ -139,25 +140,25 @@ struct Lab::State {
         ui.reset();
     }
 
-    void onKey(int key) {
+    void onAction(LabAction action) {
         const Snapshot& s = live.snapshot();
-        switch (key) {
-        case GLFW_KEY_ESCAPE: window.requestClose(); break;
-        case GLFW_KEY_SPACE: live.send(s.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}}); break;
-        case GLFW_KEY_N:
-        case GLFW_KEY_RIGHT: live.send(command::Step{1}); break;
-        case GLFW_KEY_R: live.send(command::Reset{}); break;
-        case GLFW_KEY_K: DisplayPanel::rekey(display); break;
-        case GLFW_KEY_F:
+        switch (action) {
+        case LabAction::Quit: window.requestClose(); break;
+        case LabAction::RunPause:
+            live.send(s.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
+            break;
+        case LabAction::Step: live.send(command::Step{1}); break;
+        case LabAction::Reset: live.send(command::Reset{}); break;
+        case LabAction::Rekey: DisplayPanel::rekey(display); break;
+        case LabAction::FalseColour:
             display.colourMode = display.colourMode == render::ColourMode::FalseColour ? render::ColourMode::ToneMapped
                                                                                       : render::ColourMode::FalseColour;
             break;
-        case GLFW_KEY_W: display.wireframe = !display.wireframe; break;
-        case GLFW_KEY_C: orbit.reset(); break;
-        case GLFW_KEY_H: panelsVisible = !panelsVisible; break;
-        case GLFW_KEY_S: hemispherePanel->setOverlayShown(!hemispherePanel->overlayShown()); break;
-        case GLFW_KEY_F12: screenshotRequested = true; break;
-        default: break;
+        case LabAction::Wireframe: display.wireframe = !display.wireframe; break;
+        case LabAction::HomeView: orbit.reset(); break;
+        case LabAction::TogglePanels: panelsVisible = !panelsVisible; break;
+        case LabAction::Dome: hemispherePanel->setOverlayShown(!hemispherePanel->overlayShown()); break;
+        case LabAction::Screenshot: screenshotRequested = true; break;
         }
     }
 
@@ -386,7 +387,9 @@ std::uint64_t Lab::frameCount() const { return state_->frameCount; }
 std::uint64_t Lab::radiosityUploads() const { return state_->patches->radiosityUploads(); }
 std::shared_ptr<const Snapshot> Lab::snapshot() const { return state_->live.current; }
 void Lab::send(SolverCommand command) { state_->live.send(std::move(command)); }
-void Lab::pressKey(int glfwKey) { state_->onKey(glfwKey); }
+void Lab::pressKey(int glfwKey) {
+    if (const std::optional<Shortcut> shortcut = shortcutForKey(glfwKey)) state_->onAction(shortcut->action);
+}
 bool Lab::clickAt(const glm::dvec2& framebufferPixel) { return state_->pickAt(framebufferPixel); }
 std::optional<ProbeReading> Lab::probeReading() const { return state_->probePanel->reading(); }
 std::uint64_t Lab::probeGeneration() const { return state_->probePanel->readingGeneration(); }

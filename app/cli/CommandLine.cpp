@@ -8,8 +8,15 @@
 
 #include "app/LabApp.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
+
+Scene loadSceneArgument(const std::string& nameOrPath) {
+    Scene scene = loadScene(nameOrPath).scene;
+    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+    return scene;
+}
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     CLI::App root{"Radiant: an interactive lab for radiometry and radiosity", "radiant"};

@@ -2,7 +2,10 @@
 // `radiant [SCENE]` opens the lab; `radiant solve|probe|reference|render|bench ...` run without a window.
 // Exit status 0 on success, 2 on bad arguments or bad input (one line on stderr).
 #include <functional>
+#include <string>
 #include <vector>
+
+#include "radiometry/scene/Scene.h"
 
 namespace CLI {
 class App;
@@ -27,6 +30,10 @@ struct Subcommand {
     CLI::App* app = nullptr;
     CommandAction run;
 };
+/// The SCENE argument of every subcommand (a built-in name or a glTF path), its loader warnings
+/// printed on stderr, one line each. Throws RadiantError as loadScene does.
+Scene loadSceneArgument(const std::string& nameOrPath);
+
 Subcommand addSolveCommand(CLI::App& root);
 Subcommand addProbeCommand(CLI::App& root);
 Subcommand addReferenceCommand(CLI::App& root);

@@ -18,12 +18,7 @@
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
-#include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/Solver.h"
-#if __has_include("radiometry/scene/SceneLibrary.h")
-#include "radiometry/scene/SceneLibrary.h"
-#define RADIANT_PROBE_HAS_SCENE_LIBRARY 1
-#endif
 
 namespace radiant::app {
 
@@ -40,18 +35,6 @@ struct ProbeCommandOptions {
     std::size_t maxIterations = 10000;
     std::string json = "-";
 };
-
-/// The scene, its loader warnings printed on stderr (they also go into the JSON).
-Scene loadProbeScene(const std::string& nameOrPath) {
-#ifdef RADIANT_PROBE_HAS_SCENE_LIBRARY
-    Scene scene = loadScene(nameOrPath).scene;
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
-    return scene;
-#else
-    if (nameOrPath == "cornell-box") return makeCornellBox();
-    throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
-#endif
-}
 
 /// "X,Y,Z" -> vector; anything else is an error naming the option and the value.
 glm::dvec3 parseVector(const std::string& text, const char* option) {
@@ -87,14 +70,6 @@ std::size_t chooseTarget(const Scene& scene, const std::string& name) {
     throw RadiantError({scene.name, "--target"}, "the scene has no emitting surface; name a target");
 }
 
-/// Per-patch exitance: the solution when no solver is available (direct light only).
-std::vector<Rgb> emissionOnly(const Scene& scene, const PatchMesh& mesh) {
-    std::vector<Rgb> b(mesh.size());
-    for (std::size_t p = 0; p < mesh.size(); ++p)
-        b[p] = scene.materials.at(scene.surfaces.at(mesh.patches[p].surface).material).exitance.value();
-    return b;
-}
-
 nlohmann::json rgbJson(const Rgb& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 int runProbe(const ProbeCommandOptions& options) {
@@ -106,7 +81,7 @@ int runProbe(const ProbeCommandOptions& options) {
         throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
     const SolverMethod method = parseMethod(options.method);
 
-    const Scene scene = loadProbeScene(options.scene);
+    const Scene scene = loadSceneArgument(options.scene);
     const std::size_t target = chooseTarget(scene, options.target);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
@@ -131,12 +106,6 @@ int runProbe(const ProbeCommandOptions& options) {
     } catch (const BudgetError& e) {
         if (!e.where().file.empty()) throw;
         throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
-    } catch (const RadiantError& e) {
-        // A solver still being written throws "not available"; the probe stays useful without it.
-        if (std::string(e.what()).find("not available") == std::string::npos) throw;
-        radiosity = emissionOnly(scene, mesh);
-        solution = "direct light only";
-        iterations = 0;
     }
 
     const ProbeReading reading = probe.measure(at, normal, radiosity, target);
@@ -151,6 +120,8 @@ int runProbe(const ProbeCommandOptions& options) {
     out["normal"] = rgbJson(reading.normal);
     out["surface"] = scene.surfaces[reading.at.surface].name;
     out["radiosity_W_m2"] = rgbJson(reading.radiosity.value());
+    out["interpolated_radiosity_W_m2"] = rgbJson(reading.interpolatedRadiosity.value());
+    out["patch_radiosity_W_m2"] = rgbJson(reading.patchRadiosity.value());
     out["radiance_W_m2_sr"] = rgbJson(reading.radiance.value());
     out["irradiance_W_m2"] = rgbJson(reading.irradiance.value());
     const TargetReading& t = *reading.target;

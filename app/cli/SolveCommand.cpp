@@ -16,12 +16,7 @@
 #include "app/cli/CommandLine.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
-#include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/Solver.h"
-#if __has_include("radiometry/scene/SceneLibrary.h")
-#include "radiometry/scene/SceneLibrary.h"
-#define RADIANT_HAS_SCENE_LIBRARY 1
-#endif
 
 namespace radiant::app {
 
@@ -36,18 +31,6 @@ struct SolveOptions {
     std::string json;
     std::string csv;
 };
-
-/// The scene, its loader warnings printed on stderr (they also go into the JSON).
-Scene loadSceneByName(const std::string& nameOrPath) {
-#ifdef RADIANT_HAS_SCENE_LIBRARY
-    Scene scene = loadScene(nameOrPath).scene;
-    for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
-    return scene;
-#else
-    if (nameOrPath == "cornell-box") return makeCornellBox();
-    throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
-#endif
-}
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -105,7 +88,7 @@ int runSolve(const SolveOptions& options) {
     const SolverMethod method = parseMethod(options.method);
 
     const auto meshStart = std::chrono::steady_clock::now();
-    const Scene scene = loadSceneByName(options.scene);
+    const Scene scene = loadSceneArgument(options.scene);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include "app/ui/FrameStats.h"
+#include "app/ui/Shortcuts.h"
 
 namespace radiant::app {
 namespace {
@@ -42,21 +43,8 @@ void InfoPanel::draw() {
 
     ImGui::Spacing();
     ImGui::TextDisabled("Controls");
-    control("Left drag", "orbit");
-    control("Right/middle drag", "pan");
-    control("Wheel", "zoom");
-    control("Left click", "probe a point");
-    control("Space", "run / pause the solve");
-    control("N or Right", "one step (hold: repeat)");
-    control("R", "reset the solve");
-    control("K", "re-key the exposure on this solution");
-    control("F", "false colour on/off");
-    control("W", "patch wireframe on/off");
-    control("C", "home (Cornell) view");
-    control("H", "hide/show panels");
-    control("S", "dome over the probe point on/off");
-    control("F12", "screenshot to PNG");
-    control("Esc", "quit");
+    for (const MouseControl& mouse : labMouseControls()) control(mouse.input, mouse.does);
+    for (const Shortcut& shortcut : labShortcuts()) control(shortcut.keys, shortcut.does);
 }
 
 } // namespace radiant::app

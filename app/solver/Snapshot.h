@@ -37,7 +37,6 @@ struct Snapshot {
     bool running = false;                   ///< stepping by itself until converged or paused
     double tolerance = 1e-4;                ///< running stops when the residual falls below this
     std::string error;                      ///< the last command's failure, empty when it succeeded
-    std::string notice;                     ///< the last warning worth showing (e.g. from loading)
     /// Solvers built (each one a form-factor computation or initial linking) since the thread
     /// started: a materials edit must leave it unchanged.
     std::uint64_t solverBuilds = 0;

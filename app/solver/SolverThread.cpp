@@ -44,7 +44,6 @@ struct SolverThread::State {
     std::uint64_t meshGeneration = 0;
     std::uint64_t solverBuilds = 0;
     std::string error;
-    std::string notice;
     std::chrono::steady_clock::time_point lastPublish{};
     /// The link segments last published and what they were made from: rebuilt only when the
     /// solver, its link count or (through a command) its links may have changed.
@@ -397,7 +396,6 @@ void SolverThread::publish(State& state) {
     s->running = state.running || state.pendingSteps > 0;
     s->tolerance = state.tolerance;
     s->error = state.error;
-    s->notice = state.notice;
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
     publishOverlays(state, *s);

@@ -10,6 +10,7 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "radiometry/common/Check.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
@@ -159,17 +160,18 @@ ProbeReading Probe::measure(const SurfacePoint& at, const glm::dvec3& n, std::sp
     ProbeReading reading;
     reading.at = at;
     reading.normal = unitNormal(n);
-    reading.radiosity = RadiosityRgb(interpolateRadiosity(mesh_, radiosity, at.patch, at.point));
-    reading.radiance = radianceFromRadiosity(reading.radiosity);
+    reading.interpolatedRadiosity = RadiosityRgb(interpolateRadiosity(mesh_, radiosity, at.patch, at.point));
+    reading.patchRadiosity = RadiosityRgb(radiosity[at.patch]);
     reading.irradiance = irradiance(at, reading.normal, radiosity);
+    const Material& material = scene_.materials.at(scene_.surfaces.at(at.surface).material);
+    reading.radiosity = RadiosityRgb(material.exitance.value() + material.reflectance * reading.irradiance.value());
+    reading.radiance = radianceFromRadiosity(reading.radiosity);
     if (targetSurface) reading.target = target(at, reading.normal, *targetSurface);
     return reading;
 }
 
 IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity) const {
-    if (radiosity.size() != mesh_.patches.size())
-        throw RadiantError({"", "probe"}, "the solution has " + std::to_string(radiosity.size()) + " values for " +
-                                              std::to_string(mesh_.patches.size()) + " patches");
+    RADIANT_CHECK_EQ(radiosity.size(), mesh_.patches.size());  // a solution of this mesh
     const glm::dvec3 up = unitNormal(n);
     std::vector<PolygonSample> samples;
     Rgb sum(0.0);

@@ -1,7 +1,11 @@
 #pragma once
 // The point probe: what a small detector lying on a surface at x, facing n, would read.
 //
-//   B(x)  radiosity, interpolated from the per-patch solution (RadiosityInterpolation.h)
+//   B(x)  = M(x) + rho(x) E(x): the radiosity leaving x, from the irradiance gathered at x below (a
+//         final gather of the solution: one more bounce, evaluated at the point instead of averaged
+//         over a patch, so a shadow edge or a contact corner inside a patch reads right)
+//   B_interp(x) radiosity interpolated from the per-patch solution (RadiosityInterpolation.h): what
+//         the 3D view shows; it differs from B(x) by the discretisation error of the mesh
 //   L(x)  = B(x) / pi, the radiance leaving a diffuse surface
 //   E(x)  = sum_j B_j F(dx -> j) V(x, j): irradiance gathered at the exact point. F(dx -> j) is
 //         Lambert's exact point-to-polygon form factor; V the visible fraction of patch j seen from
@@ -59,9 +63,11 @@ struct TargetReading {
 struct ProbeReading {
     SurfacePoint at;
     glm::dvec3 normal{0, 0, 1};   ///< unit
-    RadiosityRgb radiosity{};     ///< W/m^2
-    RadianceRgb radiance{};       ///< W/(m^2 sr)
-    IrradianceRgb irradiance{};   ///< W/m^2
+    RadiosityRgb radiosity{};     ///< M + rho E at the point, W/m^2
+    RadiosityRgb interpolatedRadiosity{};  ///< from the patches' solution, as the 3D view shows it, W/m^2
+    RadiosityRgb patchRadiosity{};  ///< the solver's value for the patch under the point, W/m^2
+    RadianceRgb radiance{};       ///< B / pi, W/(m^2 sr)
+    IrradianceRgb irradiance{};   ///< gathered at the point, W/m^2
     std::optional<TargetReading> target;
 };
 

@@ -1,3 +1,4 @@
+// ctest-labels: threads
 // Form factors against closed forms from Howell's catalog and the lecture (docs: oracles.md),
 // computed here from the formulas, for several dimensions each.
 #include <doctest/doctest.h>

@@ -1,3 +1,4 @@
+// ctest-labels: threads
 // Hierarchical radiosity scaled by element count (hierarchicalSetupForElements): the leaves reach
 // the requested resolution and the links grow linearly with them, not quadratically. These are
 // properties of the algorithm (Hanrahan, Salzman, Aupperle 1991, Section 4), not closed forms; the

@@ -1,3 +1,4 @@
+// ctest-labels: threads
 // The path-traced reference (radiometry/reference/) against closed forms from oracles.md: the
 // furnace (B = E / (1 - rho) everywhere), direct light between parallel opposed rectangles (the
 // differential-area-to-rectangle form factor, four corner rectangles summed), energy balance in a

@@ -1,3 +1,4 @@
+// ctest-labels: threads
 #include <doctest/doctest.h>
 
 #include <atomic>

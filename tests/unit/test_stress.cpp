@@ -1,3 +1,4 @@
+// ctest-labels: threads;stress
 // Concurrency stress: a seeded random storm of commands to a SolverThread running the real solvers on
 // a coarse Cornell box, while a reader takes snapshots at a display's pace and checks each one, under a
 // watchdog that measures progress rather than time. Run under ThreadSanitizer by scripts/test (labels

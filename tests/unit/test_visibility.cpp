@@ -1,3 +1,4 @@
+// ctest-labels: threads
 // Ray casting and visibility: picks return the right surface, face, point and normal; rays never
 // report the surface they start on; a blocker hides the fraction of segments geometry predicts.
 #include <doctest/doctest.h>
