@@ -219,15 +219,25 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     row("Normal", "", reading.normal);
     ImGui::Spacing();
     ImGui::TextDisabled("per band: red  green  blue");
-    row("B", "W/m\xC2\xB2", reading.radiosity.value());
-    row("L = B/pi", "W/(m\xC2\xB2 sr)", reading.radiance.value());
     row("E", "W/m\xC2\xB2", reading.irradiance.value());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Irradiance gathered at this point: the solver's patch radiosities seen through Lambert's\n"
+                          "exact point-to-polygon form factors, with ray-cast visibility");
     row("rho", "", material.reflectance);
     // The radiosity equation at this point: what leaves is what is emitted plus what is reflected.
-    row("M + rho E", "W/m\xC2\xB2", material.exitance.value() + material.reflectance * reading.irradiance.value());
+    row("B = M+rho E", "W/m\xC2\xB2", reading.radiosity.value());
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Emitted exitance plus reflected irradiance: equals B once the solve has converged\n"
-                          "(up to the patch discretisation: B is interpolated, E is gathered exactly)");
+        ImGui::SetTooltip("Radiosity leaving this point: its exitance M plus rho times the E gathered here\n"
+                          "(a final gather of the solution, so shadows inside a patch read right)");
+    row("L = B/pi", "W/(m\xC2\xB2 sr)", reading.radiance.value());
+    row("B drawn", "W/m\xC2\xB2", reading.interpolatedRadiosity.value());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Interpolated from the patches' radiosities at their corners, as the 3D view shows it.\n"
+                          "It differs from B = M + rho E by the mesh's discretisation error: a finer mesh\n"
+                          "(Scene panel) brings them together.");
+    row("B of patch", "W/m\xC2\xB2", reading.patchRadiosity.value());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The solver's own value for patch %zu, constant over the patch", reading.at.patch);
     drawPathTraced(reading);
 }
 
