@@ -336,7 +336,7 @@ TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and 
     CHECK(refused.error.find("degrees from the front of surface 'receiver'") != std::string::npos);
 }
 
-TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error; bad input exits 2") {
+TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error, and bad input exits 2") {
     // The built-in: a black emitter [0,1]^2 at y = 0 (exitance 1) and a receiver of rho 0.5 at y = 1.
     const std::string output = "/tmp/radiant-test-reference-" + std::to_string(::getpid()) + ".json";
     const std::string command = std::string(RADIANT_BINARY) +
