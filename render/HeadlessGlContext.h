@@ -23,7 +23,7 @@ public:
 
 private:
     HeadlessGlContext() = default;
-    void* display_ = nullptr;  // EGLDisplay, kept opaque so this header stays free of EGL
+    void* display_ = nullptr;  // EGLDisplay (initialised, never terminated), opaque to keep EGL out of this header
     void* context_ = nullptr;  // EGLContext
     std::string platform_;
 };
