@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "app/bench/BenchTable.h"
-#include "app/window/Window.h"
+#include "app/window/OffscreenContext.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/hemicube/HemicubeGather.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -47,13 +47,8 @@ BenchTable benchHemicube(const BenchOptions& options) {
                       "+ readback (hemicubes/s)", "+ gather (hemicubes/s)", "ms each (all)"},
                      {},
                      {}};
-    const char* display = std::getenv("DISPLAY");
-    if (display == nullptr || *display == '\0') {
-        table.notes.push_back("skipped: no display");
-        return table;
-    }
     try {
-        const Window window({320, 240, "radiant bench", false, false});
+        const OffscreenContext context("radiant bench");
         const render::GlInfo gl = render::queryGlInfo();
         const Scene box = makeCornellBox();
         MeshingOptions meshing;
@@ -77,7 +72,7 @@ BenchTable benchHemicube(const BenchOptions& options) {
                                   formatNumber(1.0 / render), formatNumber(1.0 / readback), formatNumber(1.0 / all),
                                   formatNumber(all * 1e3)});
         }
-        table.notes.push_back(std::to_string(mesh.size()) + " patches; GL: " + gl.renderer + ", " + gl.version);
+        table.notes.push_back(std::to_string(mesh.size()) + " patches; GL: " + gl.renderer + ", " + gl.version + " through " + context.kind());
     } catch (const RadiantError& error) {
         table.notes.push_back(std::string("skipped: ") + error.what());
     }

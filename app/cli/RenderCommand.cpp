@@ -1,6 +1,6 @@
 // `radiant render SCENE --png FILE`: load, mesh, solve to residual 1e-3 (no solver thread: the
 // command line waits anyway), then draw from the scene's home camera into an offscreen framebuffer
-// of a hidden window's GL context and write the PNG.
+// of a headless EGL context (a hidden window's where EGL is missing) and write the PNG.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
@@ -10,7 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "app/cli/CommandLine.h"
-#include "app/window/Window.h"
+#include "app/window/OffscreenContext.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/SceneLibrary.h"
@@ -83,9 +83,8 @@ int runRender(const RenderOptions& options) {
     if (!(options.maxPatchArea > 0))
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
     const SolverMethod method = parseMethod(options.method);
-    // The GL context first, so a missing display fails before the solve rather than after. Any
-    // window will do: the picture goes to a framebuffer of the requested size.
-    const Window window({64, 64, "radiant render", /*visible=*/false, /*vsync=*/false});
+    // The GL context first, so a missing one fails before the solve rather than after.
+    const OffscreenContext context("radiant render");
 
     LoadedScene loaded = loadScene(options.scene);
     for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());

@@ -12,6 +12,7 @@
 
 #include <glm/common.hpp>
 
+#include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/hemicube/HemicubeGather.h"
 #include "radiometry/hemisphere/HemisphericalCoordinates.h"
@@ -224,16 +225,16 @@ void HemispherePanel::draw() {
     }
     int projection = static_cast<int>(projection_);
     bool changed = ImGui::RadioButton("Nusselt", &projection, 0);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("equidistant"));
     changed |= ImGui::RadioButton("equidistant", &projection, 1);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("equisolid"));
     changed |= ImGui::RadioButton("equisolid", &projection, 2);
     if (changed) setProjection(static_cast<HemisphereProjection>(projection));
     int colouring = static_cast<int>(imageOptions_.colouring);
     changed = ImGui::RadioButton("surfaces", &colouring, 0);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("radiance"));
     changed |= ImGui::RadioButton("radiance", &colouring, 1);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("delta F"));
     changed |= ImGui::RadioButton("delta F", &colouring, 2);
     if (changed) setColouring(static_cast<render::HemisphereColouring>(colouring));
     if (ImGui::Checkbox("theta/phi grid (15 / 30 deg)", &imageOptions_.grid)) dirty_ = true;
@@ -241,9 +242,9 @@ void HemispherePanel::draw() {
     if (ImGui::Checkbox("dome over the point in 3D (S)", &dome)) setOverlayShown(dome);
     if (overlayShown_) {
         float size = static_cast<float>(overlaySize_ * 100.0);
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+        ui::setNextWidthBesideLabel("dome radius, % of scene");
         if (ImGui::SliderFloat("dome radius, % of scene", &size, 5.0f, 40.0f, "%.0f %%")) overlaySize_ = size / 100.0;
-        ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+        ui::setNextWidthBesideLabel("dome opacity");
         ImGui::SliderFloat("dome opacity", &overlayOpacity_, 0.2f, 1.0f, "%.2f");
     }
     if (ImGui::BeginCombo("target", snapshot.scene->surfaces[*target_].name.c_str())) {
@@ -268,6 +269,7 @@ void HemispherePanel::draw() {
     if (comparison_) {
         const Comparison& c = *comparison_;
         if (ImGui::BeginTable("##hemicube-vs-exact", 3, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerH)) {
+            ImGui::PushTextWrapPos(-1.0f);  // cells stay whole: the sidebar wraps prose, and a column fitted to wrapped text shrinks to a letter
             ImGui::TableSetupColumn(snapshot.scene->surfaces[*target_].name.c_str());
             ImGui::TableSetupColumn("hemicube");
             ImGui::TableSetupColumn("exact kernel");
@@ -284,6 +286,7 @@ void HemispherePanel::draw() {
             ImGui::TableNextColumn(); ImGui::TextUnformatted("Nusselt disk share");
             ImGui::TableNextColumn(); ImGui::Text("%.5f", c.nusseltCoverage);
             ImGui::TableNextColumn(); ImGui::TextDisabled("(= F)");
+            ImGui::PopTextWrapPos();
             ImGui::EndTable();
         }
         if (c.exact.formFactor > 0)

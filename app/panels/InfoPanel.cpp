@@ -4,14 +4,13 @@
 
 #include "app/ui/FrameStats.h"
 #include "app/ui/Shortcuts.h"
+#include "app/ui/SidebarLayout.h"
 
 namespace radiant::app {
 namespace {
 
 void row(const char* label, const char* format, auto... values) {
-    ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    ImGui::Text(format, values...);
+    ui::labelValueRow(label, 6.0f, format, values...);
 }
 
 void control(const char* input, const char* action) {
@@ -19,7 +18,10 @@ void control(const char* input, const char* action) {
     ImGui::TextUnformatted(input);
     // The column clears the longest input name at any font size.
     ImGui::SameLine(start + ImGui::CalcTextSize("Right/middle drag").x + ImGui::GetFontSize());
+    // Long actions wrap under themselves at the sidebar's edge.
+    ImGui::PushTextWrapPos(0.0f);
     ImGui::TextDisabled("%s", action);
+    ImGui::PopTextWrapPos();
 }
 
 } // namespace

@@ -8,6 +8,7 @@
 #include <functional>
 #include <numbers>
 
+#include "app/ui/SidebarLayout.h"
 #include "radiometry/solidangle/ClosedFormSolidAngles.h"
 
 namespace radiant::app {
@@ -86,9 +87,9 @@ void IntegralsPanel::draw() {
     int integrand = static_cast<int>(integrand_);
     bool changed = false;
     changed |= ImGui::RadioButton("d omega", &integrand, 0);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("cos d omega"));
     changed |= ImGui::RadioButton("cos d omega", &integrand, 1);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("L cos d omega"));
     const bool haveHemicube = session_ && session_->ready();
     ImGui::BeginDisabled(!haveHemicube);
     changed |= ImGui::RadioButton("L cos d omega", &integrand, 2);
@@ -101,9 +102,9 @@ void IntegralsPanel::draw() {
     }
     int method = static_cast<int>(settings_.method);
     changed |= ImGui::RadioButton("Riemann", &method, 0);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("uniform MC"));
     changed |= ImGui::RadioButton("uniform MC", &method, 1);
-    ImGui::SameLine();
+    ui::sameLineIfFits(ui::radioButtonWidth("cosine MC"));
     changed |= ImGui::RadioButton("cosine MC", &method, 2);
     if (method == 0)
         changed |= ImGui::SliderInt("theta cells", &settings_.thetaCells, 2, 64);

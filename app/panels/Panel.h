@@ -15,6 +15,8 @@ public:
     [[nodiscard]] virtual bool busy() const { return false; }
     /// Called inside the sidebar window, between the panel's header and the next one.
     virtual void draw() = 0;
+    /// Opens every section inside the panel at its next draw (the sidebar's "expand all").
+    virtual void expandAll() {}
 };
 
 } // namespace radiant::app

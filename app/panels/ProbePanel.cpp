@@ -9,6 +9,7 @@
 
 #include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
+#include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
 
 namespace radiant::app {
@@ -26,17 +27,14 @@ struct ProbePanel::Picker {
 namespace {
 
 void row(const char* label, const char* unit, const Rgb& v) {
-    ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    ImGui::Text("%.3g  %.3g  %.3g", v.x, v.y, v.z);
-    ImGui::SameLine();
+    ui::labelValueRow(label, 6.0f, "%.3g  %.3g  %.3g", v.x, v.y, v.z);
+    // A unit that does not fit beside the numbers goes below them rather than past the edge.
+    ui::sameLineIfFits(ImGui::CalcTextSize(unit).x);
     ImGui::TextDisabled("%s", unit);
 }
 
 void scalarRow(const char* label, const char* format, double value) {
-    ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 10.0f);
-    ImGui::Text(format, value);
+    ui::labelValueRow(label, 10.0f, format, value);
 }
 
 /// "+1.2%": how far the solver's value lies from the reference, relative to the reference.
@@ -210,11 +208,11 @@ void ProbePanel::draw() {
 void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     const Surface& surface = scene.surfaces.at(reading.at.surface);
     const Material& material = scene.materials.at(surface.material);
-    ImGui::TextDisabled("Surface");
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    ImGui::Text("%s", surface.name.c_str());
-    ImGui::SameLine();
-    ImGui::TextDisabled("patch %zu", reading.at.patch);
+    ui::labelValueRow("Surface", 6.0f, "%s", surface.name.c_str());
+    char patch[32];
+    std::snprintf(patch, sizeof patch, "patch %zu", reading.at.patch);
+    ui::sameLineIfFits(ImGui::CalcTextSize(patch).x);
+    ImGui::TextDisabled("%s", patch);
     row("Point", "m", reading.at.point);
     row("Normal", "", reading.normal);
     ImGui::Spacing();

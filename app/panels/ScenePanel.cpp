@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "app/ui/Colours.h"
+#include "app/ui/SidebarLayout.h"
 #include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
@@ -13,9 +14,7 @@ namespace {
 constexpr double kCm2PerM2 = 1e4;
 
 void row(const char* label, const char* format, auto... values) {
-    ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 6.0f);
-    ImGui::Text(format, values...);
+    ui::labelValueRow(label, 6.0f, format, values...);
 }
 
 } // namespace

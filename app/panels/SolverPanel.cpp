@@ -9,6 +9,7 @@
 
 #include "app/solver/MethodLabel.h"
 #include "app/ui/Colours.h"
+#include "app/ui/SidebarLayout.h"
 
 namespace radiant::app {
 namespace {
@@ -17,9 +18,7 @@ bool shoots(SolverMethod method) { return methodInfo(method).traits.shoots; }
 bool links(SolverMethod method) { return methodInfo(method).traits.links; }
 
 void row(const char* label, const char* format, auto... values) {
-    ImGui::TextDisabled("%s", label);
-    ImGui::SameLine(ImGui::GetFontSize() * 7.0f);
-    ImGui::Text(format, values...);
+    ui::labelValueRow(label, 7.0f, format, values...);
 }
 
 double total(const PowerRgb& power) {

@@ -1,6 +1,8 @@
 #pragma once
 // The panels docked at the window's left edge, full height, one collapsible section each, so the
-// 3D view keeps the rest of the window to itself and nothing floats over the box.
+// 3D view keeps the rest of the window to itself and nothing floats over the box. Its right edge
+// drags to widen it (a projector's large UI scale, a long table); the width is kept in font units,
+// so changing the UI scale keeps the proportions.
 #include <memory>
 #include <string>
 #include <utility>
@@ -24,7 +26,8 @@ public:
     }
     /// Draws the sidebar; returns its width in ImGui (window) coordinates.
     float draw(const std::string& heading, const std::string& subheading);
-    /// At the next draw, expands the panel titled `title` and collapses the others (empty: expand all).
+    /// At the next draw, expands the panel titled `title` (and every section inside it) and collapses
+    /// the others; empty expands all.
     void focus(std::string title) {
         focus_ = std::move(title);
         focusPending_ = true;
@@ -34,6 +37,7 @@ private:
     std::vector<std::unique_ptr<Panel>> panels_;
     std::string focus_;
     bool focusPending_ = false;
+    float widthInFontSizes_ = 22.0f;  ///< wide enough for a GL renderer string and a labelled slider
 };
 
 } // namespace radiant::app

@@ -20,6 +20,7 @@
 #include "radiometry/scene/GltfCameras.h"
 #include "radiometry/scene/GltfExternalFiles.h"
 #include "radiometry/scene/GltfMaterials.h"
+#include "radiometry/scene/GltfReaderError.h"
 #include "radiometry/scene/TriangleMerging.h"
 
 namespace radiant {
@@ -122,7 +123,7 @@ private:
         const bool ok = hasBinaryMagic(bytes)
                             ? reader.LoadBinaryFromMemory(&model_, &error, &warning, bytes.data(), length, folder.string())
                             : reader.LoadASCIIFromString(&model_, &error, &warning, reinterpret_cast<const char*>(bytes.data()), length, folder.string());
-        if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
+        if (!ok) throw RadiantError({path_, ""}, detail::gltfReaderErrorLine(error));
         addReaderWarnings(warning);
     }
 
@@ -162,7 +163,7 @@ private:
         const bool ok = hasBinaryMagic(memory_)
                             ? reader.LoadBinaryFromMemory(&model_, &error, &warning, memory_.data(), length, "")
                             : reader.LoadASCIIFromString(&model_, &error, &warning, reinterpret_cast<const char*>(memory_.data()), length, "");
-        if (!ok) throw RadiantError({path_, ""}, oneLine(error.empty() ? "not a glTF file" : error));
+        if (!ok) throw RadiantError({path_, ""}, detail::gltfReaderErrorLine(error));
         addReaderWarnings(warning);
     }
 

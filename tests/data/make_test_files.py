@@ -155,6 +155,12 @@ def main():
         f.write(text[: len(text) // 2])
     with open(os.path.join(OUT, "malformed.gltf"), "w") as f:
         f.write('{"asset": {"version": "2.0"}, "nodes": [ , ]}\n')
+    # A line break inside a 1 kB base64 data URI: the JSON parser's message quotes everything it read
+    # of that string, which the loader must not paste into one error line.
+    with open(os.path.join(OUT, "malformed_base64.gltf"), "w") as f:
+        payload = base64.b64encode(bytes(range(256)) * 3).decode()
+        f.write('{"asset": {"version": "2.0"},\n "buffers": [{"byteLength": 768, "uri": "data:application/octet-stream;base64,'
+                + payload + '\n"}]}\n')
     g, _ = model(SQUARE, SQUARE_INDICES, uri="does_not_exist.bin")
     write("missing_buffer.gltf", g)
     g, _ = model(SQUARE, SQUARE_INDICES)

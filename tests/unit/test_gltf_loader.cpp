@@ -4,6 +4,7 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <string>
 
@@ -137,6 +138,26 @@ TEST_CASE("bad input: missing, truncated or malformed files") {
         CHECK(contains(error, dataFile(name) + ": "));
         CHECK(error.find('\n') == std::string::npos);
     }
+}
+
+TEST_CASE("bad input: a JSON error inside a kilobyte of base64 is one short line naming the file and the place") {
+    // The file breaks its 1 kB data URI with a line break; the parser's message quoted all of it.
+    const std::string name = "malformed_base64.gltf";
+    const std::string error = loadError(name);
+    INFO(error);
+    CHECK(error.rfind(dataFile(name) + ": ", 0) == 0);
+    CHECK(error.find('\n') == std::string::npos);
+    const std::string message = error.substr(dataFile(name).size() + 2);
+    CHECK(message.size() <= 160);
+    // The line break ends line 2, so the parser stops at the start of line 3.
+    CHECK(contains(message, "malformed JSON at line 3, column 0"));
+    // Not the payload: no run of base64 longer than the few characters kept to show where it stopped.
+    std::size_t longestRun = 0, run = 0;
+    for (const char c : message) {
+        run = (std::isalnum(static_cast<unsigned char>(c)) || c == '+' || c == '/') ? run + 1 : 0;
+        longestRun = std::max(longestRun, run);
+    }
+    CHECK(longestRun <= 16);
 }
 
 TEST_CASE("bad input: missing or short buffers, accessors out of range") {

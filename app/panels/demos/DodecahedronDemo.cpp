@@ -45,7 +45,9 @@ RegularSolidNumbers regularSolidNumbers(int faces) {
 }
 
 void DodecahedronDemo::draw() {
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    // Wide enough for the longest choice and the arrow button at any UI scale.
+    ImGui::SetNextItemWidth(ImGui::CalcTextSize("12 (dodeca)").x + ImGui::GetStyle().FramePadding.x * 2 +
+                            ImGui::GetFrameHeight());
     ImGui::Combo("faces", &faceChoice, "4 (tetra)\0" "6 (cube)\0" "8 (octa)\0" "12 (dodeca)\0" "20 (icosa)\0");
     const RegularSolidNumbers n = regularSolidNumbers(kFaceCounts[static_cast<std::size_t>(faceChoice)]);
     ImGui::Text("4 pi / %d = %.4f sr", n.faces, n.perFace.value());

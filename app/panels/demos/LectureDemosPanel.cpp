@@ -24,7 +24,8 @@ void LectureDemosPanel::draw() {
         // "Demo: point source over a plane" -> "point source over a plane" under this header.
         const char* name = demo->title();
         if (std::strncmp(name, "Demo: ", 6) == 0) name += 6;
-        if (focused_) ImGui::SetNextItemOpen(std::strcmp(focused_, demo->title()) == 0 || std::strcmp(focused_, name) == 0);
+        if (expandAll_) ImGui::SetNextItemOpen(true);
+        else if (focused_) ImGui::SetNextItemOpen(std::strcmp(focused_, demo->title()) == 0 || std::strcmp(focused_, name) == 0);
         if (ImGui::TreeNodeEx(name, ImGuiTreeNodeFlags_SpanAvailWidth)) {
             ImGui::PushID(demo.get());
             demo->draw();
@@ -33,6 +34,7 @@ void LectureDemosPanel::draw() {
         }
     }
     focused_ = nullptr;
+    expandAll_ = false;
 }
 
 } // namespace radiant::app

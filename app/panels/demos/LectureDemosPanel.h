@@ -16,10 +16,12 @@ public:
     void draw() override;
     /// Opens one demo's section (by its title) and closes the others; for screenshots.
     void focus(const char* demoTitle);
+    void expandAll() override { expandAll_ = true; }
 
 private:
     std::vector<std::unique_ptr<Panel>> demos_;
     const char* focused_ = nullptr;
+    bool expandAll_ = false;
 };
 
 } // namespace radiant::app

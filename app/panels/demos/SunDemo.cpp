@@ -20,13 +20,24 @@ SunPlanetNumbers planet(const SunExample& sun, Length distance, SolidAngle lectu
     return p;
 }
 
+/// A table cell of a few digits; the full value, and what it is, in its tooltip.
+void cell(const char* shortFormat, const char* fullFormat, double value) {
+    ImGui::TableNextColumn();
+    ImGui::Text(shortFormat, value);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip(fullFormat, value);
+}
+
 void row(const char* name, const SunPlanetNumbers& p) {
     ImGui::TableNextRow();
-    ImGui::TableNextColumn(); ImGui::TextUnformatted(name);
-    ImGui::TableNextColumn(); ImGui::Text("%.4g m", p.distance.value());
-    ImGui::TableNextColumn(); ImGui::Text("%.3g sr", p.lectureSolidAngle.value());
-    ImGui::TableNextColumn(); ImGui::Text("%.4g sr", p.exactSolidAngle.value());
-    ImGui::TableNextColumn(); ImGui::Text("%.1f W/m^2", p.irradiance.value());
+    ImGui::TableNextColumn();
+    ImGui::TextUnformatted(name);
+    cell("%.3g", "distance %.6g au", p.distance.value() / SunExample().astronomicalUnit.value());
+    ImGui::TableNextColumn();
+    ImGui::Text("%.3g", p.exactSolidAngle.value());
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("omega = %.6g sr (the Sun's spherical cap); pi R^2 / d^2 = %.6g sr; the lecture's: %.3g sr",
+                          p.exactSolidAngle.value(), p.projectedAreaSolidAngle.value(), p.lectureSolidAngle.value());
+    cell("%.5g", "E = L omega = %.8g W/m^2", p.irradiance.value());
 }
 
 } // namespace
@@ -46,12 +57,16 @@ void SunDemo::draw() {
     float au = static_cast<float>(distanceAu);
     if (ImGui::SliderFloat("your planet", &au, 0.3f, 40.0f, "%.2f au", ImGuiSliderFlags_Logarithmic)) distanceAu = au;
     const SunPlanetNumbers yours = planet(sun, sun.astronomicalUnit * distanceAu, sun.projectedAreaSolidAngle(sun.astronomicalUnit * distanceAu));
-    if (ImGui::BeginTable("##sun", 5, ImGuiTableFlags_SizingStretchProp | ImGuiTableFlags_BordersInnerH)) {
-        for (const char* h : {"", "distance", "lecture omega", "omega", "E = L omega"}) ImGui::TableSetupColumn(h);
+    // Four narrow columns with the units in two-line headers fit a 14-em sidebar; the full values
+    // are in each cell's tooltip.
+    if (ImGui::BeginTable("##sun", 4, ImGuiTableFlags_SizingFixedFit | ImGuiTableFlags_BordersInnerH)) {
+        ImGui::PushTextWrapPos(-1.0f);  // cells stay whole: the sidebar wraps prose, and a column fitted to wrapped text shrinks to a letter
+        for (const char* h : {"", "d\n(au)", "omega\n(sr)", "E\n(W/m^2)"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
         row("Earth", n.earth);
         row("Mars", n.mars);
         row("yours", yours);
+        ImGui::PopTextWrapPos();
         ImGui::EndTable();
     }
     ImGui::TextWrapped("Lecture: %.4g W on 1 m^2 at Earth (omega rounded to 6.7e-5 sr); from the geometry "
