@@ -433,10 +433,10 @@ void PatchRenderer::setMesh(const Scene& scene, const PatchMesh& mesh, std::uint
     s.heldKeyW_m2 = 0.0;
     s.dataMaxW_m2 = 1.0;
     s.dataMaxStale = false;
-    setMaterials(scene);
+    setMaterials(scene, /*rekey=*/true);
 }
 
-void PatchRenderer::setMaterials(const Scene& scene) {
+void PatchRenderer::setMaterials(const Scene& scene, bool rekey) {
     State& s = *state_;
     s.patchEmits.resize(s.patchSurface.size());
     s.baseColour.resize(s.patchSurface.size());
@@ -469,7 +469,10 @@ void PatchRenderer::setMaterials(const Scene& scene) {
     const Rgb meanRadiosity = reflectorArea > 0 ? reflectorSum / reflectorArea
                               : emitterArea > 0 ? emitterSum / emitterArea
                                                 : Rgb(0.0);
-    s.energyBalanceKeyW_m2 = luminance(emitted) > 0 ? luminance(meanRadiosity) : 0.0;
+    // Kept across material edits: with the key fixed, doubling a lamp doubles what the picture shows
+    // (a lecture's moment). A new mesh, or a scene that had nothing to key on, derives it anew.
+    if (rekey || !(s.energyBalanceKeyW_m2 > 0))
+        s.energyBalanceKeyW_m2 = luminance(emitted) > 0 ? luminance(meanRadiosity) : 0.0;
     s.coloursDirty = true;
 }
 

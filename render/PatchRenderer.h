@@ -36,8 +36,10 @@ public:
     /// last call's; otherwise returns at once. Clears radiosity, importance and links.
     void setMesh(const Scene& scene, const PatchMesh& mesh, std::uint64_t meshGeneration);
     /// Per-patch colours shown while there is no radiosity: reflectance, emitters at their exitance's
-    /// chromaticity. Cheap; call when a material changes.
-    void setMaterials(const Scene& scene);
+    /// chromaticity. Cheap; call when a material changes. The energy-balance exposure key is derived
+    /// again only with `rekey` (setMesh does): a material edit keeps it, so the picture shows the
+    /// change in light.
+    void setMaterials(const Scene& scene, bool rekey = false);
     /// Per-patch radiosity in W/m^2, indexed like the mesh's patches (size must match, else throws
     /// RadiantError); uploaded only when `generation` differs from the last call's. An empty span
     /// means "no solution yet". `shooter` is the patch shot in the last step, or -1.

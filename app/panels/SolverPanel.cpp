@@ -89,9 +89,25 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     }
     if (shoots(snapshot.method)) {
         row("Unshot power", "%.4g W", total(stats.unshotPower));
-        if (stats.shooter >= 0) row("Last shooter", "patch %lld", static_cast<long long>(stats.shooter));
+        if (stats.shooter >= 0 && snapshot.mesh && snapshot.scene &&
+            static_cast<std::size_t>(stats.shooter) < snapshot.mesh->patches.size()) {
+            const std::size_t surface = snapshot.mesh->patches[static_cast<std::size_t>(stats.shooter)].surface;
+            row("Last shooter", "%s", snapshot.scene->surfaces.at(surface).name.c_str());
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("Patch %lld shot its unshot power last (outlined in the 3D view)",
+                                  static_cast<long long>(stats.shooter));
+        }
     }
-    if (links(snapshot.method)) row("Links", "%zu  (+%zu this step)", stats.links, stats.linksRefined);
+    if (links(snapshot.method)) {
+        // Refinement replaces a link by its children's: the count moves by created minus removed.
+        const std::size_t before = snapshot.history.size() >= 2 ? snapshot.history[snapshot.history.size() - 2].links : 0;
+        const long long net = static_cast<long long>(stats.links) - static_cast<long long>(before);
+        const long long removed = std::max(0LL, static_cast<long long>(stats.linksRefined) - net);
+        row("Links", "%zu (%+lld this step)", stats.links, snapshot.history.size() >= 2 ? net : 0LL);
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("This step created %zu links by refinement and removed the %lld they replaced",
+                              stats.linksRefined, removed);
+    }
     row("Step time", "%.3f ms", stats.seconds * 1e3);
     if (!snapshot.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);

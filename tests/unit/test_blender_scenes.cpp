@@ -117,7 +117,7 @@ TEST_CASE("Blender's default plane facing up, double-sided, lights the floor bel
     CHECK(solved.scene.doubleSidedSurfaceCount() == 2);
     CHECK(solved.scene.surfaces[0].name == "Lamp");
     CHECK(solved.scene.surfaces[1].name == "Lamp (back)");
-    CHECK(solved.scene.surfaces[1].faces[0].normal.y == doctest::Approx(-1.0));
+    CHECK(solved.scene.surfaces[1].faces[0].normal.y == doctest::Approx(-1.0).scale(0));
     const double expected = 0.5 * 10 * parallelRectangles(2, 2, 1);
     CHECK(solved.meanB("Floor") == doctest::Approx(expected).epsilon(0.01).scale(0));
     CHECK(solved.meanB("Lamp (back)") == doctest::Approx(10.0).epsilon(1e-9).scale(0));  // emits down, reflects nothing
@@ -135,7 +135,7 @@ TEST_CASE("Blender's default plane facing up, double-sided, lights the floor bel
     const auto up = rays.intersect({0.1, 0, 0.1}, {0, 1, 0});
     REQUIRE(up);
     CHECK(solved.scene.surfaces[up->surface].name == "Lamp (back)");
-    CHECK(up->distance == doctest::Approx(1.0));
+    CHECK(up->distance == doctest::Approx(1.0).scale(0));
     const auto down = rays.intersect({0.1, 2, 0.1}, {0, -1, 0});
     REQUIRE(down);
     CHECK(solved.scene.surfaces[down->surface].name == "Lamp");
@@ -254,7 +254,7 @@ TEST_CASE("a form-factor matrix over budget is refused naming the scene's file")
 
 TEST_CASE("an external buffer outside the scene's folder is allowed") {
     const LoadedScene loaded = loadScene(blenderFile("outside_folder.gltf"));
-    CHECK(loaded.scene.totalArea() == doctest::Approx(1.0));
+    CHECK(loaded.scene.totalArea() == doctest::Approx(1.0).scale(0));
 }
 
 } // TEST_SUITE

@@ -74,15 +74,15 @@ TEST_CASE("every built-in loads from its asset without a warning, with its surfa
         CHECK(loaded.warnings.empty());
         CHECK(loaded.scene.name == name);
         CHECK(loaded.scene.surfaces.size() == surfaceCounts.at(name));
-        if (totalAreas.count(name)) CHECK(loaded.scene.totalArea() == doctest::Approx(totalAreas.at(name)).epsilon(1e-6));
+        if (totalAreas.count(name)) CHECK(loaded.scene.totalArea() == doctest::Approx(totalAreas.at(name)).epsilon(1e-6).scale(0));
     }
     const Scene cornell = loadScene("cornell-box").scene;
     // Published corners (mm): the floor is a trapezoid, the back wall too; the light 130 x 105 mm.
-    CHECK(cornell.surfaces[cornell.findSurface("floor")].area() == doctest::Approx((0.5528 + 0.5496) / 2 * 0.5592).epsilon(1e-6));
-    CHECK(cornell.surfaces[cornell.findSurface("light")].area() == doctest::Approx(0.130 * 0.105).epsilon(1e-6));
+    CHECK(cornell.surfaces[cornell.findSurface("floor")].area() == doctest::Approx((0.5528 + 0.5496) / 2 * 0.5592).epsilon(1e-6).scale(0));
+    CHECK(cornell.surfaces[cornell.findSurface("light")].area() == doctest::Approx(0.130 * 0.105).epsilon(1e-6).scale(0));
     CHECK(cornell.surfaces[cornell.findSurface("ceiling")].area() ==
-          doctest::Approx(0.556 * 0.5592 - 0.130 * 0.105).epsilon(1e-6));
-    CHECK(cornell.surfaces[cornell.findSurface("back wall")].area() == doctest::Approx((0.5496 + 0.556) / 2 * 0.5488).epsilon(1e-6));
+          doctest::Approx(0.556 * 0.5592 - 0.130 * 0.105).epsilon(1e-6).scale(0));
+    CHECK(cornell.surfaces[cornell.findSurface("back wall")].area() == doctest::Approx((0.5496 + 0.556) / 2 * 0.5488).epsilon(1e-6).scale(0));
     // The warped left wall stays two triangles; every other flat quad comes back as quads.
     CHECK(cornell.surfaces[cornell.findSurface("left wall")].faces.size() == 2);
     CHECK(cornell.surfaces[cornell.findSurface("ceiling")].faces.size() == 8);
@@ -128,9 +128,9 @@ TEST_CASE("closed built-in boxes face inward and plates face each other") {
     const Scene plates = loadScene("parallel-plates").scene;
     const Face& emitter = plates.surfaces[plates.findSurface("emitter")].faces[0];
     const Face& receiver = plates.surfaces[plates.findSurface("receiver")].faces[0];
-    CHECK(emitter.normal.y == doctest::Approx(1.0));
-    CHECK(receiver.normal.y == doctest::Approx(-1.0));
-    CHECK(receiver.vertices[0].y - emitter.vertices[0].y == doctest::Approx(1.0));
+    CHECK(emitter.normal.y == doctest::Approx(1.0).scale(0));
+    CHECK(receiver.normal.y == doctest::Approx(-1.0).scale(0));
+    CHECK(receiver.vertices[0].y - emitter.vertices[0].y == doctest::Approx(1.0).scale(0));
 }
 
 TEST_CASE("round trip: code -> glTF (.gltf and .glb) -> Scene gives the same scene") {
@@ -149,7 +149,7 @@ TEST_CASE("round trip: code -> glTF (.gltf and .glb) -> Scene gives the same sce
                 const Surface& a = made.surfaces[s];
                 const Surface& b = loaded.scene.surfaces[s];
                 CHECK(a.name == b.name);
-                CHECK(b.area() == doctest::Approx(a.area()).epsilon(1e-6));
+                CHECK(b.area() == doctest::Approx(a.area()).epsilon(1e-6).scale(0));
                 const Material& ma = made.materials[a.material];
                 const Material& mb = loaded.scene.materials[b.material];
                 CHECK(ma.name == mb.name);
@@ -158,7 +158,7 @@ TEST_CASE("round trip: code -> glTF (.gltf and .glb) -> Scene gives the same sce
                 REQUIRE(a.faces.size() == b.faces.size());
                 for (std::size_t f = 0; f < a.faces.size(); ++f) {
                     CHECK(sameFace(a.faces[f], b.faces[f], 1e-6));  // float positions in the file
-                    CHECK(glm::dot(a.faces[f].normal, b.faces[f].normal) == doctest::Approx(1.0));
+                    CHECK(glm::dot(a.faces[f].normal, b.faces[f].normal) == doctest::Approx(1.0).scale(0));
                 }
             }
         }
@@ -194,8 +194,8 @@ TEST_CASE("the loaded Cornell box meshes like the one built in code") {
     for (const double maxArea : {1e-2, 1e-4}) {
         const PatchMesh a = meshScene(loaded, {maxArea});
         const PatchMesh b = meshScene(made, {maxArea});
-        CHECK(a.totalArea() == doctest::Approx(loaded.totalArea()).epsilon(1e-9));
-        CHECK(a.totalArea() == doctest::Approx(b.totalArea()).epsilon(1e-6));
+        CHECK(a.totalArea() == doctest::Approx(loaded.totalArea()).epsilon(1e-9).scale(0));
+        CHECK(a.totalArea() == doctest::Approx(b.totalArea()).epsilon(1e-6).scale(0));
         CHECK(a.size() == b.size());
     }
 }

@@ -31,6 +31,6 @@ TEST_CASE("tone curve table: within 1e-5 of the ACES fit and sRGB encoding from 
     CHECK(curve(std::numeric_limits<double>::quiet_NaN()) == 0.0f);
     CHECK(curve(1e9) == 1.0f);
     // Where the fit first reaches 1 (the table's end): just below it the curve is still under 1.
-    CHECK(aces(radiant::render::ToneCurveTable::kSaturation) == doctest::Approx(1.0).epsilon(1e-4));
+    CHECK(aces(radiant::render::ToneCurveTable::kSaturation) == doctest::Approx(1.0).epsilon(1e-4).scale(0));
     CHECK(aces(radiant::render::ToneCurveTable::kSaturation * 0.9) < 1.0);
 }

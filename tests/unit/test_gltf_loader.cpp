@@ -51,10 +51,10 @@ TEST_CASE("a square as two triangles loads as one quad face, whatever the contai
         CHECK(surface.origin == "mesh 0, primitive 0");
         REQUIRE(surface.faces.size() == 1);
         CHECK(surface.faces[0].vertices.size() == 4);
-        CHECK(surface.area() == doctest::Approx(1.0).epsilon(1e-12));
-        CHECK(surface.faces[0].normal.y == doctest::Approx(1.0));  // counter-clockwise winding kept
+        CHECK(surface.area() == doctest::Approx(1.0).epsilon(1e-12).scale(0));
+        CHECK(surface.faces[0].normal.y == doctest::Approx(1.0).scale(0));  // counter-clockwise winding kept
         REQUIRE(loaded.scene.materials.size() == 1);
-        CHECK(loaded.scene.materials[0].reflectance.x == doctest::Approx(0.5));
+        CHECK(loaded.scene.materials[0].reflectance.x == doctest::Approx(0.5).scale(0));
         CHECK(loaded.scene.name == dataFile(name));
     }
 }
@@ -66,8 +66,8 @@ TEST_CASE("node transforms compose down the hierarchy (TRS and matrix)") {
     // (x, 0, z) -> (2x, 2 - 2z, 0); area 4, normal +y -> +z.
     const Surface& child = loaded.scene.surfaces[0];
     CHECK(child.name == "child");
-    CHECK(child.area() == doctest::Approx(4.0).epsilon(1e-6));
-    CHECK(child.faces[0].normal.z == doctest::Approx(1.0).epsilon(1e-6));
+    CHECK(child.area() == doctest::Approx(4.0).epsilon(1e-6).scale(0));
+    CHECK(child.faces[0].normal.z == doctest::Approx(1.0).epsilon(1e-6).scale(0));
     for (const glm::dvec3& v : child.faces[0].vertices) {
         CHECK(v.z == doctest::Approx(0.0).epsilon(1e-6));
         CHECK(v.y >= -1e-6);
@@ -75,7 +75,7 @@ TEST_CASE("node transforms compose down the hierarchy (TRS and matrix)") {
     }
     const Surface& moved = loaded.scene.surfaces[1];
     CHECK(moved.name == "moved");
-    CHECK(moved.area() == doctest::Approx(1.0).epsilon(1e-6));
+    CHECK(moved.area() == doctest::Approx(1.0).epsilon(1e-6).scale(0));
     for (const glm::dvec3& v : moved.faces[0].vertices) CHECK(v.x >= 5 - 1e-6);
 }
 
@@ -97,7 +97,7 @@ TEST_CASE("coplanar triangles pair into quads, one face per square") {
     REQUIRE(faces.size() == 2);
     for (const Face& f : faces) {
         CHECK(f.vertices.size() == 4);
-        CHECK(f.area == doctest::Approx(1.0));
+        CHECK(f.area == doctest::Approx(1.0).scale(0));
     }
 }
 
@@ -106,26 +106,26 @@ TEST_CASE("materials: emissive strength, extras.radiant override, texture mean")
         const LoadedScene loaded = loadGltf(dataFile("emissive_strength.gltf"));
         const Material& m = loaded.scene.materials.at(0);
         CHECK(m.name == "lamp");
-        CHECK(m.exitance.value().x == doctest::Approx(8.0));   // 1 x 8 W/m^2
-        CHECK(m.exitance.value().y == doctest::Approx(4.0));   // 0.5 x 8
-        CHECK(m.exitance.value().z == doctest::Approx(2.0));   // 0.25 x 8
-        CHECK(m.reflectance.z == doctest::Approx(0.6));
+        CHECK(m.exitance.value().x == doctest::Approx(8.0).scale(0));   // 1 x 8 W/m^2
+        CHECK(m.exitance.value().y == doctest::Approx(4.0).scale(0));   // 0.5 x 8
+        CHECK(m.exitance.value().z == doctest::Approx(2.0).scale(0));   // 0.25 x 8
+        CHECK(m.reflectance.z == doctest::Approx(0.6).scale(0));
     }
     {
         const LoadedScene loaded = loadGltf(dataFile("extras_override.gltf"));
         const Material& m = loaded.scene.materials.at(0);
-        CHECK(m.reflectance.x == doctest::Approx(0.25));
-        CHECK(m.reflectance.z == doctest::Approx(0.75));
-        CHECK(m.exitance.value().y == doctest::Approx(200.0));
+        CHECK(m.reflectance.x == doctest::Approx(0.25).scale(0));
+        CHECK(m.reflectance.z == doctest::Approx(0.75).scale(0));
+        CHECK(m.exitance.value().y == doctest::Approx(200.0).scale(0));
     }
     {
         // A white and a black texel: the linear mean is one half, times the factor.
         const LoadedScene loaded = loadGltf(dataFile("textured.gltf"));
         CHECK(loaded.warnings.empty());
         const Material& m = loaded.scene.materials.at(0);
-        CHECK(m.reflectance.x == doctest::Approx(0.8 * 0.5));
-        CHECK(m.reflectance.y == doctest::Approx(0.6 * 0.5));
-        CHECK(m.reflectance.z == doctest::Approx(0.4 * 0.5));
+        CHECK(m.reflectance.x == doctest::Approx(0.8 * 0.5).scale(0));
+        CHECK(m.reflectance.y == doctest::Approx(0.6 * 0.5).scale(0));
+        CHECK(m.reflectance.z == doctest::Approx(0.4 * 0.5).scale(0));
     }
 }
 
@@ -190,7 +190,7 @@ TEST_CASE("recoverable input: zero-area triangles and lines are dropped with one
     const LoadedScene zero = loadGltf(dataFile("zero_area.gltf"));
     REQUIRE(zero.warnings.size() == 1);
     CHECK(contains(zero.warnings[0], "zero_area.gltf: dropped 2 zero-area triangle(s), the first in mesh 0, primitive 0 (triangle 2)"));
-    CHECK(zero.scene.totalArea() == doctest::Approx(1.0));
+    CHECK(zero.scene.totalArea() == doctest::Approx(1.0).scale(0));
 
     const LoadedScene lines = loadGltf(dataFile("lines.gltf"));
     CHECK(lines.scene.surfaces.size() == 1);
@@ -203,9 +203,9 @@ TEST_CASE("materials out of range: reflectance >= 1 is clamped with a warning, n
     CHECK(contains(bright.warnings[0], "reflectance_one.gltf: material 0 'too white': reflectance (1, 1.2, 0.5)"));
     CHECK(contains(bright.warnings[0], "clamped to 0.999"));
     const Rgb rho = bright.scene.materials.at(0).reflectance;
-    CHECK(rho.x == doctest::Approx(0.999));
-    CHECK(rho.y == doctest::Approx(0.999));
-    CHECK(rho.z == doctest::Approx(0.5));
+    CHECK(rho.x == doctest::Approx(0.999).scale(0));
+    CHECK(rho.y == doctest::Approx(0.999).scale(0));
+    CHECK(rho.z == doctest::Approx(0.5).scale(0));
 
     CHECK(contains(loadError("negative_emission.gltf"),
                    "negative_emission.gltf: material 0 'dark lamp': negative or non-finite emission (-1, 0, 0) W/m^2"));

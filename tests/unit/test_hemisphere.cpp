@@ -35,11 +35,11 @@ TEST_CASE("a direction goes to angles and back about any normal") {
         for (double theta : {0.1, 0.7, 1.2, 1.5})
             for (double phi : {0.05, 2.0, 3.5, 6.2}) {
                 const glm::dvec3 d = directionFromAngles(frame, {Radians(theta), Radians(phi)});
-                CHECK(glm::length(d) == doctest::Approx(1.0).epsilon(1e-14));
-                CHECK(glm::dot(d, unitN) == doctest::Approx(std::cos(theta)).epsilon(1e-12));
+                CHECK(glm::length(d) == doctest::Approx(1.0).epsilon(1e-14).scale(0));
+                CHECK(glm::dot(d, unitN) == doctest::Approx(std::cos(theta)).epsilon(1e-12).scale(0));
                 const SphericalDirection back = anglesFromDirection(frame, 3.0 * d);
-                CHECK(back.theta.value() == doctest::Approx(theta).epsilon(1e-12));
-                CHECK(back.phi.value() == doctest::Approx(phi).epsilon(1e-12));
+                CHECK(back.theta.value() == doctest::Approx(theta).epsilon(1e-12).scale(0));
+                CHECK(back.phi.value() == doctest::Approx(phi).epsilon(1e-12).scale(0));
             }
     }
     CHECK_THROWS_AS(HemisphereFrame(glm::dvec3(0.0)), RadiantError);
@@ -47,7 +47,7 @@ TEST_CASE("a direction goes to angles and back about any normal") {
 
 TEST_CASE("the differential solid angle is sin(theta) d theta d phi") {
     CHECK(differentialSolidAngle(Radians(kPi / 6), Radians(0.01), Radians(0.02)).value() ==
-          doctest::Approx(0.5 * 0.01 * 0.02).epsilon(1e-14));
+          doctest::Approx(0.5 * 0.01 * 0.02).epsilon(1e-14).scale(0));
     CHECK(differentialSolidAngle(Radians(0.0), Radians(0.01), Radians(0.02)).value() == 0.0);
 }
 
@@ -71,7 +71,7 @@ TEST_CASE("Riemann sums converge to 2 pi and pi with the midpoint rule's second 
         for (std::size_t k = 0; k + 1 < errors.size(); ++k) {
             const double order = std::log2(errors[k] / errors[k + 1]);
             CAPTURE(k);
-            CHECK(order == doctest::Approx(2.0).epsilon(0.02));
+            CHECK(order == doctest::Approx(2.0).epsilon(0.02).scale(0));
         }
         const double h = 0.5 * kPi / 128;
         CHECK(errors.back() <= 2 * kPi * (0.5 * kPi) * h * h / 24 * c.maxSecondDerivative);
@@ -81,10 +81,10 @@ TEST_CASE("Riemann sums converge to 2 pi and pi with the midpoint rule's second 
 TEST_CASE("Monte Carlo is exact when the density is proportional to the integrand") {
     // Uniform samples of 1 and cosine samples of cos(theta) each give weight * f = constant.
     const HemisphereEstimate uniform = integrateMonteCarlo(one, HemisphereDensity::Uniform, 1000, 7);
-    CHECK(uniform.value == doctest::Approx(2 * kPi).epsilon(1e-13));
+    CHECK(uniform.value == doctest::Approx(2 * kPi).epsilon(1e-13).scale(0));
     CHECK(uniform.standardError < 1e-12);
     const HemisphereEstimate cosineWeighted = integrateMonteCarlo(cosine, HemisphereDensity::CosineWeighted, 1000, 7);
-    CHECK(cosineWeighted.value == doctest::Approx(kPi).epsilon(1e-13));
+    CHECK(cosineWeighted.value == doctest::Approx(kPi).epsilon(1e-13).scale(0));
     CHECK(cosineWeighted.standardError < 1e-12);
 }
 
@@ -110,12 +110,12 @@ TEST_CASE("Monte Carlo errors lie within a few standard errors, which shrink lik
                 CAPTURE(n);
                 CAPTURE(seed);
                 CHECK(std::abs(e.value - c.exact) < 4.0 * e.standardError);
-                CHECK(e.standardError * std::sqrt(static_cast<double>(n)) == doctest::Approx(c.sigma).epsilon(0.05));
+                CHECK(e.standardError * std::sqrt(static_cast<double>(n)) == doctest::Approx(c.sigma).epsilon(0.05).scale(0));
                 if (seed == 1) standardErrors.push_back(e.standardError);
             }
         }
         for (std::size_t k = 0; k + 1 < standardErrors.size(); ++k)
-            CHECK(standardErrors[k + 1] / standardErrors[k] == doctest::Approx(0.5).epsilon(0.06));
+            CHECK(standardErrors[k + 1] / standardErrors[k] == doctest::Approx(0.5).epsilon(0.06).scale(0));
     }
 }
 
@@ -132,8 +132,8 @@ TEST_CASE("samplers are deterministic per seed, replay on restart and stay on th
         differs = differs || other.next().direction != s.direction;
         CHECK(s.direction == t.direction);
         CHECK(glm::dot(s.direction, frame.normal()) > 0);
-        CHECK(glm::dot(s.direction, frame.normal()) == doctest::Approx(std::cos(s.angles.theta.value())));
-        CHECK(s.weight == doctest::Approx(1.0 / a.pdf(s.angles.theta)));
+        CHECK(glm::dot(s.direction, frame.normal()) == doctest::Approx(std::cos(s.angles.theta.value())).scale(0));
+        CHECK(s.weight == doctest::Approx(1.0 / a.pdf(s.angles.theta)).scale(0));
         first.push_back(s.direction);
     }
     CHECK(differs);
@@ -146,9 +146,9 @@ TEST_CASE("integrating about a tilted normal with f(direction) gives the same an
     const glm::dvec3 n = glm::normalize(glm::dvec3(-0.2, 0.9, 0.4));
     const auto projected = [n](const glm::dvec3& d) { return glm::dot(d, n); };
     RiemannHemisphereSampler riemann(64, 128, HemisphereFrame(n));
-    CHECK(integrate(riemann, projected).value == doctest::Approx(kPi).epsilon(1e-3));
+    CHECK(integrate(riemann, projected).value == doctest::Approx(kPi).epsilon(1e-3).scale(0));
     MonteCarloHemisphereSampler cosineSampler(HemisphereDensity::CosineWeighted, 500, 3, HemisphereFrame(n));
-    CHECK(integrate(cosineSampler, projected).value == doctest::Approx(kPi).epsilon(1e-12));
+    CHECK(integrate(cosineSampler, projected).value == doctest::Approx(kPi).epsilon(1e-12).scale(0));
 }
 
 TEST_CASE("the accumulator shows a running estimate sample by sample") {
@@ -161,7 +161,7 @@ TEST_CASE("the accumulator shows a running estimate sample by sample") {
         CHECK(accumulator.estimate().value > previous);
         previous = accumulator.estimate().value;
     }
-    CHECK(previous == doctest::Approx(2 * kPi).epsilon(5e-3));
+    CHECK(previous == doctest::Approx(2 * kPi).epsilon(5e-3).scale(0));
     CHECK_THROWS_AS(RiemannHemisphereSampler(0, 4), RadiantError);
 }
 
@@ -172,9 +172,9 @@ TEST_CASE("a frame turned about its normal keeps the normal and turns tangent an
     CHECK(glm::length(quarter.tangent() - frame.bitangent()) < 1e-12);
     CHECK(glm::length(quarter.bitangent() + frame.tangent()) < 1e-12);
     const HemisphereFrame eighth = frame.turned(Radians(kPi / 8));
-    CHECK(glm::dot(eighth.tangent(), frame.tangent()) == doctest::Approx(std::cos(kPi / 8)).epsilon(1e-12));
+    CHECK(glm::dot(eighth.tangent(), frame.tangent()) == doctest::Approx(std::cos(kPi / 8)).epsilon(1e-12).scale(0));
     CHECK(glm::dot(eighth.tangent(), eighth.bitangent()) == doctest::Approx(0.0).epsilon(1e-12));
-    CHECK(glm::dot(glm::cross(eighth.tangent(), eighth.bitangent()), eighth.normal()) == doctest::Approx(1.0).epsilon(1e-12));
+    CHECK(glm::dot(glm::cross(eighth.tangent(), eighth.bitangent()), eighth.normal()) == doctest::Approx(1.0).epsilon(1e-12).scale(0));
 }
 
 } // TEST_SUITE

@@ -170,7 +170,7 @@ TEST_CASE("element tree: roots per face, quad and triangle children tile their p
     CHECK(tree.roots().size() == scene.faceCount() - 1 + 3);
     double rootArea = 0;
     for (const ElementIndex r : tree.roots()) rootArea += tree.area(r);
-    CHECK(rootArea == doctest::Approx(scene.totalArea()).epsilon(1e-12));
+    CHECK(rootArea == doctest::Approx(scene.totalArea()).epsilon(1e-12).scale(0));
 
     for (const ElementIndex r : tree.roots()) {
         const ElementIndex first = tree.subdivide(r);
@@ -179,9 +179,9 @@ TEST_CASE("element tree: roots per face, quad and triangle children tile their p
             childArea += tree.area(c);
             CHECK(tree.parent(c) == r);
             CHECK(tree.polygon(c).count == tree.polygon(r).count);
-            CHECK(glm::dot(tree.polygon(c).normal, tree.polygon(r).normal) == doctest::Approx(1.0));
+            CHECK(glm::dot(tree.polygon(c).normal, tree.polygon(r).normal) == doctest::Approx(1.0).scale(0));
         }
-        CHECK(childArea == doctest::Approx(tree.area(r)).epsilon(1e-12));
+        CHECK(childArea == doctest::Approx(tree.area(r)).epsilon(1e-12).scale(0));
         CHECK(tree.subdivide(r) == first);  // idempotent
     }
     CHECK(tree.leafCount() == 4 * tree.roots().size());
@@ -230,7 +230,7 @@ TEST_CASE("hierarchical: the furnace converges to E / (1 - rho)") {
                 const ElementTree& tree = solver->elements();
                 double sum = 0;
                 for (const ElementIndex e : tree.leaves()) sum += tree.area(e) * tree.radiosity()[e].x;
-                CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005));
+                CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005).scale(0));
                 // Per patch (what the window shows). A furnace amplifies form-factor errors by
                 // rho / (1 - rho); the worst patches touch the box's concave edges.
                 double worst = 0;
@@ -257,8 +257,8 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
                 auto solver = makeMethod(method, scene, facesAsPatches(scene), unoccluded(1e-5, 1e-5),
                                          {0.5 * g.a, 0.5 * g.b, 0.1 * g.c}, {0.5 * g.a, 0.5 * g.b, g.c});
                 solve(*solver);
-                CHECK(solver->solution()[0].x == doctest::Approx(E1).epsilon(1e-12));
-                CHECK(solver->solution()[1].x == doctest::Approx(E2 + rho2 * F * E1).epsilon(2e-3));
+                CHECK(solver->solution()[0].x == doctest::Approx(E1).epsilon(1e-12).scale(0));
+                CHECK(solver->solution()[1].x == doctest::Approx(E2 + rho2 * F * E1).epsilon(2e-3).scale(0));
             }
         }
         SUBCASE("both reflecting: B1 = (E1 + rho1 F12 E2) / (1 - rho1 rho2 F12 F21)") {
@@ -272,8 +272,8 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
                 solve(*solver);
                 // The closed form treats each plate as uniform; the true radiosity is not, which
                 // moves the means by a fraction of rho1 rho2 F^2 (< 5%): 0.5% covers it.
-                CHECK(solver->solution()[0].x == doctest::Approx((E1 + rho1 * F * E2) / denominator).epsilon(5e-3));
-                CHECK(solver->solution()[1].x == doctest::Approx((E2 + rho2 * F * E1) / denominator).epsilon(5e-3));
+                CHECK(solver->solution()[0].x == doctest::Approx((E1 + rho1 * F * E2) / denominator).epsilon(5e-3).scale(0));
+                CHECK(solver->solution()[1].x == doctest::Approx((E2 + rho2 * F * E1) / denominator).epsilon(5e-3).scale(0));
             }
         }
     }
@@ -295,7 +295,7 @@ TEST_CASE("hierarchical: energy balance (1 - rho) sum A B = sum A E in a closed 
             for (const ElementIndex e : tree.leaves()) reflected += (1 - rho) * tree.area(e) * tree.radiosity()[e];
             for (const Surface& s : scene.surfaces) emitted += s.area() * scene.materials[s.material].exitance.value();
             for (int band = 0; band < 3; ++band)
-                CHECK(reflected[band] == doctest::Approx(emitted[band]).epsilon(0.01));
+                CHECK(reflected[band] == doctest::Approx(emitted[band]).epsilon(0.01).scale(0));
         }
     }
 }
@@ -343,8 +343,8 @@ TEST_CASE("hierarchical: setMaterial keeps the links and resumes to the fresh an
         solve(*resumed);
         auto fresh = makeMethod(method, after, facesAsPatches(after), unoccluded(1e-5, 1e-5), eye, target);
         solve(*fresh);
-        CHECK(resumed->solution()[1].x == doctest::Approx(0.7 * F * 2).epsilon(2e-3));
-        CHECK(resumed->solution()[1].x == doctest::Approx(fresh->solution()[1].x).epsilon(2e-3));
+        CHECK(resumed->solution()[1].x == doctest::Approx(0.7 * F * 2).epsilon(2e-3).scale(0));
+        CHECK(resumed->solution()[1].x == doctest::Approx(fresh->solution()[1].x).epsilon(2e-3).scale(0));
         CHECK_THROWS_AS(resumed->setMaterial(5, Rgb(0.5), ExitanceRgb{}), RadiantError);
         CHECK_THROWS_AS(resumed->setMaterial(0, Rgb(1.0), ExitanceRgb{}), RadiantError);
     }
@@ -375,7 +375,7 @@ TEST_CASE("hierarchical: the meshed Cornell box shows each patch the leaves unde
         }
         for (const ElementIndex e : tree.leaves())
             if (tree.surface(e) == s) leafSum += tree.area(e) * tree.radiosity()[e];
-        CHECK(patchSum.x == doctest::Approx(leafSum.x).epsilon(0.03));
+        CHECK(patchSum.x == doctest::Approx(leafSum.x).epsilon(0.03).scale(0));
     }
     solver->reset();
     CHECK(solver->lastStats().iteration == 0);
@@ -442,7 +442,7 @@ TEST_CASE("importance: the adjoint identity sum A r B = sum A E Y") {
     CHECK(image.x > 0);
     // Exact for the exact solutions; the links p <- q and q <- p are refined separately, so the
     // discrete operators are transposes only up to the refinement tolerance.
-    CHECK(adjoint.x == doctest::Approx(image.x).epsilon(0.005));
+    CHECK(adjoint.x == doctest::Approx(image.x).epsilon(0.005).scale(0));
     MESSAGE("image " << image.x << " W/m^2, adjoint " << adjoint.x << " W/m^2");
 }
 

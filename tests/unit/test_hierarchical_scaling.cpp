@@ -68,7 +68,7 @@ TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho), closer with mo
         }
         rmsLeaf.push_back(std::sqrt(squares / scene.totalArea()));
         worstLeaf.push_back(worst);
-        CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005));
+        CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005).scale(0));
         // Per patch (0.1 m^2, what the window shows), as in test_hierarchical.cpp: form-factor errors
         // amplified by rho / (1 - rho), worst at the box's concave edges.
         double worstPatch = 0;
@@ -163,7 +163,7 @@ TEST_CASE("hierarchical far field: the disk estimate is the exact kernel where r
     const double side = 0.1, area = side * side;
     const std::vector<glm::dvec3> corners = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
     const PatchPolygon source = makeElementPolygon(corners);
-    REQUIRE(source.normal.z == doctest::Approx(1.0));
+    REQUIRE(source.normal.z == doctest::Approx(1.0).scale(0));
     for (const double r2OverA : {32.0, 100.0, 1000.0})
         for (const double tilt : {0.0, 0.4, 1.0})
             for (const double offAxis : {0.0, 0.5, 1.0}) {
@@ -180,7 +180,7 @@ TEST_CASE("hierarchical far field: the disk estimate is the exact kernel where r
                 const double estimate = hierarchical::farFieldFormFactor(x, normal, source);
                 REQUIRE(exact > 0);
                 REQUIRE(estimate >= 0);
-                CHECK(estimate == doctest::Approx(exact).epsilon(0.01));
+                CHECK(estimate == doctest::Approx(exact).epsilon(0.01).scale(0));
                 // No point sees more than a differential source facing it squarely would give.
                 CHECK(exact <= area / (std::numbers::pi * r * r) * 1.01);
             }

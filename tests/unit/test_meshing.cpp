@@ -113,8 +113,8 @@ TEST_CASE("a rectangle becomes an n x m grid of equal quads sharing their vertic
         CHECK(mesh.vertices.size() == (nu + 1) * (nv + 1));
         for (const Patch& p : mesh.patches) {
             CHECK(p.cornerCount == 4);
-            CHECK(p.area == doctest::Approx(w * h / static_cast<double>(nu * nv)).epsilon(1e-9));
-            CHECK(p.normal.z == doctest::Approx(1.0));
+            CHECK(p.area == doctest::Approx(w * h / static_cast<double>(nu * nv)).epsilon(1e-9).scale(0));
+            CHECK(p.normal.z == doctest::Approx(1.0).scale(0));
         }
         CHECK(eulerCharacteristic(mesh, 0) == 1);
     }
@@ -129,8 +129,8 @@ TEST_CASE("a triangle becomes n^2 similar triangles on (n+1)(n+2)/2 shared verti
         CHECK(mesh.vertices.size() == (n + 1) * (n + 2) / 2);
         for (const Patch& p : mesh.patches) {
             CHECK(p.cornerCount == 3);
-            CHECK(p.area == doctest::Approx(0.5 / static_cast<double>(n * n)).epsilon(1e-9));
-            CHECK(p.normal.y == doctest::Approx(1.0));  // orientation kept
+            CHECK(p.area == doctest::Approx(0.5 / static_cast<double>(n * n)).epsilon(1e-9).scale(0));
+            CHECK(p.normal.y == doctest::Approx(1.0).scale(0));  // orientation kept
         }
         CHECK(eulerCharacteristic(mesh, 0) == 1);
     }
@@ -143,7 +143,7 @@ TEST_CASE("Cornell box: areas kept, every patch under the limit, no T-junctions"
         const PatchMesh mesh = meshScene(cornell, {maxArea});
         REQUIRE(mesh.surfaceFirstPatch.size() == cornell.surfaces.size() + 1);
         CHECK(mesh.surfaceFirstPatch.back() == mesh.size());
-        CHECK(mesh.totalArea() == doctest::Approx(cornell.totalArea()).epsilon(1e-9));
+        CHECK(mesh.totalArea() == doctest::Approx(cornell.totalArea()).epsilon(1e-9).scale(0));
         double smallest = 1e30;
         for (const Patch& p : mesh.patches) {
             CHECK(p.area <= maxArea * (1 + 4e-6));
@@ -153,7 +153,7 @@ TEST_CASE("Cornell box: areas kept, every patch under the limit, no T-junctions"
         CHECK(smallest > maxArea / 5);
         for (std::size_t s = 0; s < cornell.surfaces.size(); ++s) {
             CAPTURE(cornell.surfaces[s].name);
-            CHECK(surfacePatchArea(mesh, s) == doctest::Approx(cornell.surfaces[s].area()).epsilon(1e-9));
+            CHECK(surfacePatchArea(mesh, s) == doctest::Approx(cornell.surfaces[s].area()).epsilon(1e-9).scale(0));
             for (std::size_t p = mesh.surfaceFirstPatch[s]; p < mesh.surfaceFirstPatch[s + 1]; ++p)
                 CHECK(mesh.patches[p].surface == s);
         }
@@ -162,7 +162,7 @@ TEST_CASE("Cornell box: areas kept, every patch under the limit, no T-junctions"
     // The floor is a trapezoid: (552.8 + 549.6) / 2 x 559.2 mm^2, from the published corners.
     const PatchMesh coarse = meshScene(cornell, {0.01});
     CHECK(surfacePatchArea(coarse, cornell.findSurface("floor")) ==
-          doctest::Approx((0.5528 + 0.5496) / 2 * 0.5592).epsilon(1e-9));
+          doctest::Approx((0.5528 + 0.5496) / 2 * 0.5592).epsilon(1e-9).scale(0));
 
     const PatchMesh mesh = meshScene(cornell, {1e-4});  // 1 cm^2
     for (std::size_t s = 0; s < cornell.surfaces.size(); ++s) {
@@ -190,7 +190,7 @@ TEST_CASE("a tapered quad is refined until its largest cell fits") {
     const Scene scene = sceneOf({makeFace({{0, 0, 0}, {1, 0, 0}, {0.55, 1, 0}, {0.45, 1, 0}})});
     for (const double maxArea : {0.1, 0.01, 0.001}) {
         const PatchMesh mesh = meshScene(scene, {maxArea});
-        CHECK(mesh.totalArea() == doctest::Approx(0.55).epsilon(1e-9));
+        CHECK(mesh.totalArea() == doctest::Approx(0.55).epsilon(1e-9).scale(0));
         for (const Patch& p : mesh.patches) CHECK(p.area <= maxArea * (1 + 4e-6));
         CHECK(eulerCharacteristic(mesh, 0) == 1);
     }
@@ -207,7 +207,7 @@ TEST_CASE("a convex polygon with more corners is fanned and stays conforming") {
         face.updateGeometry();
         const double area = 0.5 * corners * std::sin(2 * std::numbers::pi / corners);
         const PatchMesh mesh = meshScene(sceneOf({face}), {0.01});
-        CHECK(mesh.totalArea() == doctest::Approx(area).epsilon(1e-9));
+        CHECK(mesh.totalArea() == doctest::Approx(area).epsilon(1e-9).scale(0));
         for (const Patch& p : mesh.patches) CHECK(p.area <= 0.01 * (1 + 4e-6));
         CHECK(eulerCharacteristic(mesh, 0) == 1);
         CHECK(countTJunctions(mesh, 0, 0.1) == 0);
@@ -218,7 +218,7 @@ TEST_CASE("a quad and a triangle sharing an edge agree on its vertices") {
     const Scene scene = sceneOf({makeFace({{0, 0, 0}, {1, 0, 0}, {1, 0.2, 0}, {0, 0.2, 0}}),
                                  makeFace({{0, 0.2, 0}, {1, 0.2, 0}, {0.5, 2.0, 0}})});
     const PatchMesh mesh = meshScene(scene, {0.005});
-    CHECK(mesh.totalArea() == doctest::Approx(0.2 + 0.9).epsilon(1e-9));
+    CHECK(mesh.totalArea() == doctest::Approx(0.2 + 0.9).epsilon(1e-9).scale(0));
     CHECK(eulerCharacteristic(mesh, 0) == 1);
     CHECK(countTJunctions(mesh, 0, 0.05) == 0);
 }
@@ -267,7 +267,7 @@ TEST_CASE("meshing reports progress per face and honours cancellation") {
     const PatchMesh mesh = meshScene(cornell, {0.001}, &progress);
     CHECK(progress.total.load() == cornell.faceCount());
     CHECK(progress.done.load() == cornell.faceCount());
-    CHECK(progress.fraction() == doctest::Approx(1.0));
+    CHECK(progress.fraction() == doctest::Approx(1.0).scale(0));
 
     Progress cancelled;
     cancelled.cancelRequested = true;
@@ -279,10 +279,10 @@ TEST_CASE("PatchPolygon derives area, normal and the area-weighted centroid") {
     const std::array<glm::dvec3, 4> trapezoid{{{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.5, 1, 0}}};
     const PatchPolygon p = PatchPolygon::from(trapezoid);
     CHECK(p.count == 4);
-    CHECK(p.area == doctest::Approx(1.5));
-    CHECK(p.normal.z == doctest::Approx(1.0));
-    CHECK(p.centroid.x == doctest::Approx(1.0));
-    CHECK(p.centroid.y == doctest::Approx(4.0 / 9.0));
+    CHECK(p.area == doctest::Approx(1.5).scale(0));
+    CHECK(p.normal.z == doctest::Approx(1.0).scale(0));
+    CHECK(p.centroid.x == doctest::Approx(1.0).scale(0));
+    CHECK(p.centroid.y == doctest::Approx(4.0 / 9.0).scale(0));
     const std::array<glm::dvec3, 2> line{{{0, 0, 0}, {1, 0, 0}}};
     CHECK_THROWS_AS((void)PatchPolygon::from(line), RadiantError);
 }

@@ -102,7 +102,7 @@ TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner
             CAPTURE(x.x);
             CAPTURE(x.y);
             const Scene scene = parallelSquares(h);
-            REQUIRE(scene.surfaces[1].faces[0].normal.z == doctest::Approx(-1.0));
+            REQUIRE(scene.surfaces[1].faces[0].normal.z == doctest::Approx(-1.0).scale(0));
             const PatchMesh mesh = meshScene(scene, meshing(0.01));
             const RayCaster rays(scene);
             const Probe probe(scene, mesh, &rays);
@@ -112,8 +112,8 @@ TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner
             const double expectedOmega = rectangleFromCorners(cornerSolidAngle, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
                                                               0.5 - x.y, h);
             if (x == glm::dvec3(0.0)) {  // the centre: four equal 0.5 x 0.5 corner rectangles
-                CHECK(expectedF == doctest::Approx(4 * cornerFormFactor(0.5, 0.5, h)).epsilon(1e-14));
-                CHECK(expectedOmega == doctest::Approx(4 * cornerSolidAngle(0.5, 0.5, h)).epsilon(1e-14));
+                CHECK(expectedF == doctest::Approx(4 * cornerFormFactor(0.5, 0.5, h)).epsilon(1e-14).scale(0));
+                CHECK(expectedOmega == doctest::Approx(4 * cornerSolidAngle(0.5, 0.5, h)).epsilon(1e-14).scale(0));
             }
             REQUIRE(r.target);
             CHECK(r.target->name == "emitter");
@@ -198,10 +198,10 @@ TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
             const double visibleOmega = rectangleFromCorners(cornerSolidAngle, 2 * e, 0.5, -0.5, 0.5, h);
             const double fullF = 4 * cornerFormFactor(0.5, 0.5, h);
             REQUIRE(r.target);
-            CHECK(r.target->unoccludedFormFactor == doctest::Approx(fullF).epsilon(1e-9));
-            CHECK(r.target->formFactor == doctest::Approx(visibleF).epsilon(5e-4));
-            CHECK(r.target->solidAngle.value() == doctest::Approx(visibleOmega).epsilon(5e-4));
-            CHECK(r.irradiance.value().x == doctest::Approx(visibleF).epsilon(1e-3));
+            CHECK(r.target->unoccludedFormFactor == doctest::Approx(fullF).epsilon(1e-9).scale(0));
+            CHECK(r.target->formFactor == doctest::Approx(visibleF).epsilon(5e-4).scale(0));
+            CHECK(r.target->solidAngle.value() == doctest::Approx(visibleOmega).epsilon(5e-4).scale(0));
+            CHECK(r.irradiance.value().x == doctest::Approx(visibleF).epsilon(1e-3).scale(0));
         }
 }
 
@@ -224,9 +224,9 @@ TEST_CASE("radiosity interpolation reproduces a linear field inside a surface") 
     // Wachspress coordinates: barycentric on a triangle.
     const std::array<glm::dvec3, 3> triangle{{{0, 0, 0}, {2, 0, 0}, {0, 1, 0}}};
     const auto w = wachspressCoordinates(triangle, {0, 0, 1}, {0.5, 0.25, 0});
-    CHECK(w[0] == doctest::Approx(0.5));
-    CHECK(w[1] == doctest::Approx(0.25));
-    CHECK(w[2] == doctest::Approx(0.25));
+    CHECK(w[0] == doctest::Approx(0.5).scale(0));
+    CHECK(w[1] == doctest::Approx(0.25).scale(0));
+    CHECK(w[2] == doctest::Approx(0.25).scale(0));
 }
 
 TEST_CASE("radiosity does not bleed around a crease of one surface") {
@@ -240,8 +240,8 @@ TEST_CASE("radiosity does not bleed around a crease of one surface") {
     wall.vertices = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
     floor.updateGeometry();
     wall.updateGeometry();
-    REQUIRE(floor.normal.y == doctest::Approx(1.0));
-    REQUIRE(wall.normal.z == doctest::Approx(1.0));
+    REQUIRE(floor.normal.y == doctest::Approx(1.0).scale(0));
+    REQUIRE(wall.normal.z == doctest::Approx(1.0).scale(0));
     scene.surfaces.push_back({"fold", 0, {floor, wall}, "test"});
     const PatchMesh mesh = meshScene(scene, meshing(0.04));
     std::vector<Rgb> b(mesh.size());
@@ -249,8 +249,8 @@ TEST_CASE("radiosity does not bleed around a crease of one surface") {
     const Probe probe(scene, mesh, nullptr);
     const ProbeReading onFloor = probe.measure(glm::dvec3(0.5, 0, 0.01), {0, 1, 0}, b);
     const ProbeReading onWall = probe.measure(glm::dvec3(0.5, 0.01, 0), {0, 0, 1}, b);
-    CHECK(onFloor.interpolatedRadiosity.value().x == doctest::Approx(1.0).epsilon(1e-12));
-    CHECK(onWall.interpolatedRadiosity.value().x == doctest::Approx(5.0).epsilon(1e-12));
+    CHECK(onFloor.interpolatedRadiosity.value().x == doctest::Approx(1.0).epsilon(1e-12).scale(0));
+    CHECK(onWall.interpolatedRadiosity.value().x == doctest::Approx(5.0).epsilon(1e-12).scale(0));
 }
 
 TEST_CASE("a point off every surface or a normal into the surface is refused") {
@@ -286,7 +286,7 @@ TEST_CASE("radiant probe on the built-in parallel plates prints the closed forms
     for (int band = 0; band < 3; ++band) {
         CHECK(std::abs(j["irradiance_W_m2"][band].get<double>() - F) < 1e-4);
         CHECK(j["radiance_W_m2_sr"][band].get<double>() ==
-              doctest::Approx(j["radiosity_W_m2"][band].get<double>() / kPi).epsilon(1e-12));
+              doctest::Approx(j["radiosity_W_m2"][band].get<double>() / kPi).epsilon(1e-12).scale(0));
     }
     // A bad vector exits 2 with one line naming the option.
     CHECK(std::system((std::string(RADIANT_BINARY) + " probe parallel-plates --point 0.5,1 --normal 0,-1,0 2>/dev/null")

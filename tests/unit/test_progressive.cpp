@@ -137,7 +137,7 @@ TEST_CASE("block shooters cover every patch once with blocks of one face whose o
                 area += mesh.patches[i].area;
             }
             // Members inside the convex outline and areas summing to its area: the outline is their union.
-            CHECK(shooters.polygons[g].area == doctest::Approx(area).epsilon(1e-9));
+            CHECK(shooters.polygons[g].area == doctest::Approx(area).epsilon(1e-9).scale(0));
         }
         CHECK(std::all_of(seen.begin(), seen.end(), [](int n) { return n == 1; }));
         CHECK(largest <= 2 * block * block);  // a triangle lattice's cell is two triangles
@@ -160,11 +160,11 @@ TEST_CASE("block shooters' form factors match the box face-to-face closed forms"
         REQUIRE(shooters.size() < mesh.size() / 4);
         const ShotFormFactors shot = makeRayCastShotFormFactors(box, mesh, shooters, {});
         // Surfaces: 0 x=0 (h x d), 1 x=w, 2 y=0 (w x d), 3 y=h, 4 z=0 (w x h), 5 z=d.
-        CHECK(faceToFace(mesh, shooters, shot, 0, 1) == doctest::Approx(parallelRectangles(h, d, w)).epsilon(3e-3));
-        CHECK(faceToFace(mesh, shooters, shot, 4, 5) == doctest::Approx(parallelRectangles(w, h, d)).epsilon(3e-3));
-        CHECK(faceToFace(mesh, shooters, shot, 0, 2) == doctest::Approx(perpendicularRectangles(h, w, d)).epsilon(3e-3));
-        CHECK(faceToFace(mesh, shooters, shot, 2, 0) == doctest::Approx(perpendicularRectangles(w, h, d)).epsilon(3e-3));
-        CHECK(faceToFace(mesh, shooters, shot, 4, 2) == doctest::Approx(perpendicularRectangles(h, d, w)).epsilon(3e-3));
+        CHECK(faceToFace(mesh, shooters, shot, 0, 1) == doctest::Approx(parallelRectangles(h, d, w)).epsilon(3e-3).scale(0));
+        CHECK(faceToFace(mesh, shooters, shot, 4, 5) == doctest::Approx(parallelRectangles(w, h, d)).epsilon(3e-3).scale(0));
+        CHECK(faceToFace(mesh, shooters, shot, 0, 2) == doctest::Approx(perpendicularRectangles(h, w, d)).epsilon(3e-3).scale(0));
+        CHECK(faceToFace(mesh, shooters, shot, 2, 0) == doctest::Approx(perpendicularRectangles(w, h, d)).epsilon(3e-3).scale(0));
+        CHECK(faceToFace(mesh, shooters, shot, 4, 2) == doctest::Approx(perpendicularRectangles(h, d, w)).epsilon(3e-3).scale(0));
     }
 }
 
@@ -189,8 +189,8 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
     const auto check = [&](double rho) {
         const double tolerance = rho * deviation / (1 - rho * (1 + deviation)) + 1e-5;
         for (const Rgb& B : solver->solution()) {
-            CHECK(B.x == doctest::Approx(1.0 / (1 - rho)).epsilon(tolerance));
-            CHECK(B.z == doctest::Approx(3.0 / (1 - rho)).epsilon(tolerance));
+            CHECK(B.x == doctest::Approx(1.0 / (1 - rho)).epsilon(tolerance).scale(0));
+            CHECK(B.z == doctest::Approx(3.0 / (1 - rho)).epsilon(tolerance).scale(0));
         }
     };
     solveTo(*solver, 1e-6);
@@ -218,7 +218,7 @@ TEST_CASE("Cornell box: block shooters agree with Gauss-Seidel per surface") {
         const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
         for (std::size_t s = 0; s < means.size(); ++s) {
             CAPTURE(cornell.surfaces[s].name);
-            for (int band = 0; band < 3; ++band) CHECK(means[s][band] == doctest::Approx(expected[s][band]).epsilon(0.01));
+            for (int band = 0; band < 3; ++band) CHECK(means[s][band] == doctest::Approx(expected[s][band]).epsilon(0.01).scale(0));
         }
     }
 }

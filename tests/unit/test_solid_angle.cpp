@@ -42,11 +42,11 @@ TEST_CASE("a rectangle seen from above its corner matches the closed form to 1e-
                 const double expected = cornerRectangle(a, b, h);
                 const auto polygon = rectangle(0, 0, a, b);
                 CHECK(signedPolygonSolidAngle({0, 0, h}, polygon).value() ==
-                      doctest::Approx(expected).epsilon(1e-9));
+                      doctest::Approx(expected).epsilon(1e-9).scale(0));
                 CHECK(cornerRectangleSolidAngle(Length(a), Length(b), Length(h)).value() ==
-                      doctest::Approx(expected).epsilon(1e-12));
+                      doctest::Approx(expected).epsilon(1e-12).scale(0));
             }
-    CHECK(cornerRectangle(1, 1, 1) == doctest::Approx(kPi / 6).epsilon(1e-14));
+    CHECK(cornerRectangle(1, 1, 1) == doctest::Approx(kPi / 6).epsilon(1e-14).scale(0));
 }
 
 TEST_CASE("a point above the inside, outside, or behind a rectangle: sums and differences of corners") {
@@ -56,18 +56,18 @@ TEST_CASE("a point above the inside, outside, or behind a rectangle: sums and di
         // Above an interior point: four corner rectangles around the foot of the perpendicular.
         const double inside = cornerRectangle(1.0, 0.5, h) + cornerRectangle(2.0, 0.5, h) +
                               cornerRectangle(1.0, 1.5, h) + cornerRectangle(2.0, 1.5, h);
-        CHECK(signedPolygonSolidAngle({0, 0, h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9));
+        CHECK(signedPolygonSolidAngle({0, 0, h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9).scale(0));
         // From behind: the same magnitude, negative sign.
-        CHECK(signedPolygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(-inside).epsilon(1e-9));
-        CHECK(polygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9));
+        CHECK(signedPolygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(-inside).epsilon(1e-9).scale(0));
+        CHECK(polygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9).scale(0));
         // Above a point outside the rectangle (x = 3): the difference of two corner rectangles per side.
         const double outside = cornerRectangle(4.0, 0.5, h) - cornerRectangle(1.0, 0.5, h) +
                                cornerRectangle(4.0, 1.5, h) - cornerRectangle(1.0, 1.5, h);
-        CHECK(signedPolygonSolidAngle({3, 0, h}, polygon).value() == doctest::Approx(outside).epsilon(1e-9));
+        CHECK(signedPolygonSolidAngle({3, 0, h}, polygon).value() == doctest::Approx(outside).epsilon(1e-9).scale(0));
     }
     // Very close above the inside, a large polygon fills nearly the whole hemisphere.
     CHECK(polygonSolidAngle({0, 0, 1e-6}, rectangle(-1e3, -1e3, 1e3, 1e3)).value() ==
-          doctest::Approx(2 * kPi).epsilon(1e-6));
+          doctest::Approx(2 * kPi).epsilon(1e-6).scale(0));
     CHECK(polygonSolidAngle({0.3, 0.2, 0}, polygon).value() == 0.0);  // in its plane: seen edge-on
     CHECK_THROWS_AS(polygonSolidAngle({0, 0, 1}, std::vector<glm::dvec3>{{0, 0, 0}, {1, 0, 0}}), RadiantError);
 }
@@ -77,7 +77,7 @@ TEST_CASE("a fine regular polygon approaches the cap 2 pi (1 - cos alpha)") {
         const double radius = 1.0;
         const double alpha = std::atan(radius / h);
         const double cap = 2 * kPi * (1 - std::cos(alpha));
-        CHECK(coneSolidAngle(Radians(alpha)).value() == doctest::Approx(cap).epsilon(1e-12));
+        CHECK(coneSolidAngle(Radians(alpha)).value() == doctest::Approx(cap).epsilon(1e-12).scale(0));
         double previousError = 1e9;
         for (int sides : {16, 64, 256, 1024, 4096}) {
             std::vector<glm::dvec3> polygon;
@@ -93,8 +93,8 @@ TEST_CASE("a fine regular polygon approaches the cap 2 pi (1 - cos alpha)") {
         }
         CHECK(previousError / cap < 1e-6);
     }
-    CHECK(coneSolidAngle(Radians(kPi / 2)).value() == doctest::Approx(2 * kPi).epsilon(1e-14));
-    CHECK(coneSolidAngle(Radians(kPi)).value() == doctest::Approx(4 * kPi).epsilon(1e-14));
+    CHECK(coneSolidAngle(Radians(kPi / 2)).value() == doctest::Approx(2 * kPi).epsilon(1e-14).scale(0));
+    CHECK(coneSolidAngle(Radians(kPi)).value() == doctest::Approx(4 * kPi).epsilon(1e-14).scale(0));
 }
 
 TEST_CASE("each face of a regular dodecahedron subtends 4 pi / 12 at its centre, and the 12 sum to 4 pi") {
@@ -126,7 +126,7 @@ TEST_CASE("each face of a regular dodecahedron subtends 4 pi / 12 at its centre,
         std::sort(face.begin(), face.end(),
                   [&](const glm::dvec3& p, const glm::dvec3& q) { return glm::dot(p, n) > glm::dot(q, n); });
         face.resize(5);
-        REQUIRE(glm::dot(face[4], n) == doctest::Approx(glm::dot(face[0], n)));
+        REQUIRE(glm::dot(face[4], n) == doctest::Approx(glm::dot(face[0], n)).scale(0));
         const glm::dvec3 centre = (face[0] + face[1] + face[2] + face[3] + face[4]) / 5.0;
         const glm::dvec3 u = glm::normalize(face[0] - centre);
         const glm::dvec3 v = glm::cross(n, u);
@@ -136,11 +136,11 @@ TEST_CASE("each face of a regular dodecahedron subtends 4 pi / 12 at its centre,
         });
         const double signedOmega = signedPolygonSolidAngle({0, 0, 0}, face).value();
         CHECK(signedOmega < 0);  // the centre lies behind every outward-facing face
-        CHECK(-signedOmega == doctest::Approx(4 * kPi / 12).epsilon(1e-12));
+        CHECK(-signedOmega == doctest::Approx(4 * kPi / 12).epsilon(1e-12).scale(0));
         total += -signedOmega;
     }
-    CHECK(total == doctest::Approx(4 * kPi).epsilon(1e-12));
-    CHECK(regularSolidFaceSolidAngle(12).value() == doctest::Approx(1.0472).epsilon(1e-4));
+    CHECK(total == doctest::Approx(4 * kPi).epsilon(1e-12).scale(0));
+    CHECK(regularSolidFaceSolidAngle(12).value() == doctest::Approx(1.0472).epsilon(1e-4).scale(0));
     CHECK_THROWS_AS(regularSolidFaceSolidAngle(7), RadiantError);
 }
 
@@ -157,7 +157,7 @@ TEST_CASE("A/R^2 holds for a small far square and fails close up") {
         previousError = relativeError;
         // and the exact polygon route agrees with the closed form at every distance
         CHECK(polygonSolidAngle({0, 0, distance}, rectangle(-0.5, -0.5, 0.5, 0.5)).value() ==
-              doctest::Approx(exact).epsilon(1e-9));
+              doctest::Approx(exact).epsilon(1e-9).scale(0));
     }
     CHECK(previousError < 1e-3);
     CHECK_THROWS_AS(smallAreaSolidAngle(Area(1.0), Length(0.0)), RadiantError);

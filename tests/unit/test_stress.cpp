@@ -36,8 +36,8 @@ using namespace radiant::app;
 
 namespace {
 
-constexpr SolverMethod kMethods[] = {SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
-                                     SolverMethod::Hierarchical, SolverMethod::Importance};
+/// Every method in the table, so a new one is stormed too.
+SolverMethod methodNumber(std::size_t i) { return solverMethods()[i % solverMethods().size()].method; }
 /// Coarse enough that a form-factor build takes milliseconds (tens of patches), so thousands of
 /// commands with hundreds of rebuilds finish in seconds, even under ThreadSanitizer.
 constexpr double kPatchAreas[] = {0.12, 0.2, 0.35};
@@ -215,7 +215,7 @@ StormResult Storm::run() {
             const Rgb exitance = surface == light ? Rgb(uniform(1, 20), uniform(1, 20), uniform(1, 20)) : Rgb(0.0);
             send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitance)});
         } else if (kind < 74) {
-            send(command::SetMethod{kMethods[pick(std::size(kMethods))]});
+            send(command::SetMethod{methodNumber(pick(solverMethods().size()))});
         } else if (kind < 78) {
             send(command::Remesh{MeshingOptions{kPatchAreas[pick(std::size(kPatchAreas))], 100'000}});
         } else if (kind < 88) {
@@ -233,9 +233,8 @@ StormResult Storm::run() {
     // and back) before the comparison. The gathering and shooting solvers keep the state the storm
     // left them, so material edits on a live solver are what the comparison checks.
     StormResult result;
-    result.finalMethod = kMethods[pick(std::size(kMethods))];
-    if (result.finalMethod == SolverMethod::Hierarchical || result.finalMethod == SolverMethod::Importance)
-        send(command::SetMethod{SolverMethod::Jacobi});
+    result.finalMethod = methodNumber(pick(solverMethods().size()));
+    if (methodInfo(result.finalMethod).traits.links) send(command::SetMethod{SolverMethod::Jacobi});
     send(command::SetMethod{result.finalMethod});
     send(command::SetTolerance{kFinalTolerance});
     send(command::Run{});

@@ -88,14 +88,14 @@ TEST_CASE("ray caster: picks return the surface, face, point, normal and distanc
         // A pentagon, so that some hits land in its second or third fan triangle.
         {"pentagon", {faceOf({{0, 0, 2}, {1, 0, 2}, {1.3, 0.6, 2}, {0.5, 1, 2}, {-0.3, 0.6, 2}})}},
     });
-    CHECK(scene.surfaces[1].faces[0].normal.x == doctest::Approx(-1));
+    CHECK(scene.surfaces[1].faces[0].normal.x == doctest::Approx(-1).scale(0));
     const RayCaster rays(scene);
 
     auto hit = rays.intersect({0.5, 0.25, 1}, {0, 0, -1});
     REQUIRE(hit);
     CHECK(hit->surface == 0);
     CHECK(hit->face == 0);
-    CHECK(hit->distance == doctest::Approx(1));
+    CHECK(hit->distance == doctest::Approx(1).scale(0));
     CHECK(glm::length(hit->point - glm::dvec3{0.5, 0.25, 0}) < 1e-7);
     CHECK(glm::length(hit->normal - glm::dvec3{0, 0, 1}) < 1e-12);
 
@@ -103,14 +103,14 @@ TEST_CASE("ray caster: picks return the surface, face, point, normal and distanc
     REQUIRE(hit);
     CHECK(hit->surface == 0);
     CHECK(hit->face == 1);
-    CHECK(hit->distance == doctest::Approx(1.5));
+    CHECK(hit->distance == doctest::Approx(1.5).scale(0));
     CHECK(glm::length(hit->point - glm::dvec3{1.7, 0.9, 0}) < 1e-7);
 
     hit = rays.intersect({1, 0.5, 0.5}, glm::dvec3{2, 0, 0.2});
     REQUIRE(hit);
     CHECK(hit->surface == 1);
     CHECK(hit->face == 0);
-    CHECK(hit->distance == doctest::Approx(std::sqrt(4 + 0.04)));
+    CHECK(hit->distance == doctest::Approx(std::sqrt(4 + 0.04)).scale(0));
     CHECK(glm::length(hit->point - glm::dvec3{3, 0.5, 0.7}) < 1e-7);
     CHECK(glm::length(hit->normal - glm::dvec3{-1, 0, 0}) < 1e-12);
 
@@ -118,7 +118,7 @@ TEST_CASE("ray caster: picks return the surface, face, point, normal and distanc
     hit = rays.intersect({0.5, 0.5, 1.5}, {0, 0, 1});
     REQUIRE(hit);
     CHECK(hit->surface == 2);
-    CHECK(hit->distance == doctest::Approx(0.5));
+    CHECK(hit->distance == doctest::Approx(0.5).scale(0));
     for (const glm::dvec3& target : {glm::dvec3{1.1, 0.6, 2}, glm::dvec3{0.5, 0.9, 2}, glm::dvec3{-0.2, 0.6, 2}}) {
         hit = rays.intersect({0.5, 0.5, 3}, target - glm::dvec3{0.5, 0.5, 3});
         REQUIRE(hit);
@@ -139,18 +139,18 @@ TEST_CASE("ray caster: picks in the Cornell box") {
     auto hit = rays.intersect({0.278, 0.45, -0.8}, {0, 0, 1});
     REQUIRE(hit);
     CHECK(box.surfaces[hit->surface].name == "back wall");
-    CHECK(hit->distance == doctest::Approx(0.8 + 0.5592));
-    CHECK(hit->normal.z == doctest::Approx(-1));
+    CHECK(hit->distance == doctest::Approx(0.8 + 0.5592).scale(0));
+    CHECK(hit->normal.z == doctest::Approx(-1).scale(0));
     // Straight down onto the tall block's top at y = 0.33, and up into the light.
     hit = rays.intersect({0.37, 0.5, 0.35}, {0, -1, 0});
     REQUIRE(hit);
     CHECK(box.surfaces[hit->surface].name == "tall block");
-    CHECK(hit->point.y == doctest::Approx(0.33));
-    CHECK(hit->normal.y == doctest::Approx(1));
+    CHECK(hit->point.y == doctest::Approx(0.33).scale(0));
+    CHECK(hit->normal.y == doctest::Approx(1).scale(0));
     hit = rays.intersect({0.278, 0.1, 0.28}, {0, 1, 0});
     REQUIRE(hit);
     CHECK(box.surfaces[hit->surface].name == "light");
-    CHECK(hit->normal.y == doctest::Approx(-1));
+    CHECK(hit->normal.y == doctest::Approx(-1).scale(0));
 }
 
 TEST_CASE("ray caster: rays never report the surface they start on") {
@@ -223,7 +223,7 @@ TEST_CASE("visibility: a square blocker halfway between parallel plates hides th
         const double unoccluded = formFactor(bottom, top, nullptr, options);
         const double occluded = formFactor(bottom, top, &rays, options);
         CHECK(std::abs(occluded / unoccluded - (1 - blocked)) < 3 * std::sqrt(blocked * (1 - blocked) / 1024));
-        CHECK(bottom.area * occluded == doctest::Approx(top.area * formFactor(top, bottom, &rays, options)).epsilon(1e-3));
+        CHECK(bottom.area * occluded == doctest::Approx(top.area * formFactor(top, bottom, &rays, options)).epsilon(1e-3).scale(0));
     }
 }
 
