@@ -4,6 +4,8 @@
 #include <cmath>
 #include <map>
 
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/probe/Probe.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
@@ -53,6 +55,72 @@ const GaussSeidelReference& cornellGaussSeidelReference(bool quick) {
     for (int k = 0; k < 500 && solver->step().residual > 1e-9; ++k) {
     }
     return solved[quick] = {meshing.maxPatchArea, surfaceMeans(scene, mesh, solver->solution())};
+}
+
+const std::vector<ProbePoint>& cornellProbePoints() {
+    static const std::vector<ProbePoint> points = {
+        {"floor, front", {0.28, 0, 0.05}, {0, 1, 0}},
+        {"floor, back corner by the red wall", {0.52, 0, 0.53}, {0, 1, 0}},
+        {"floor, between the blocks", {0.30, 0, 0.20}, {0, 1, 0}},
+        {"floor, beside the short block", {0.06, 0, 0.15}, {0, 1, 0}},
+        {"ceiling, front corner", {0.05, 0.5488, 0.05}, {0, -1, 0}},
+        {"ceiling, beside the light", {0.28, 0.5488, 0.18}, {0, -1, 0}},
+        {"ceiling, back", {0.45, 0.5488, 0.50}, {0, -1, 0}},
+        {"back wall, middle", {0.28, 0.27, 0.5592}, {0, 0, -1}},
+        {"back wall, top corner", {0.03, 0.52, 0.5592}, {0, 0, -1}},
+        {"red wall, middle", {0.5536, 0.2744, 0.2796}, {-1, 0, 0}},
+        {"green wall, low", {0, 0.10, 0.10}, {1, 0, 0}},
+        {"green wall, high", {0, 0.45, 0.45}, {1, 0, 0}},
+        {"short block, front side", {0.21, 0.08, 0.0895}, glm::dvec3(49, 0, -160) / 167.33},
+        {"short block, green-wall side", {0.106, 0.08, 0.145}, glm::dvec3(-160, 0, -48) / 167.04},
+        {"short block, top", {0.19, 0.165, 0.17}, {0, 1, 0}},
+        {"tall block, red-wall side", {0.4475, 0.15, 0.3265}, glm::dvec3(159, 0, -49) / 166.38},
+        {"tall block, front side", {0.344, 0.20, 0.2715}, glm::dvec3(-49, 0, -158) / 165.42},
+    };
+    return points;
+}
+
+const PointReference& cornellPointReference(bool quick) {
+    static std::map<bool, PointReference> solved;
+    if (const auto found = solved.find(quick); found != solved.end()) return found->second;
+    const Scene scene = makeCornellBox();
+    MeshingOptions meshing;
+    meshing.maxPatchArea = quick ? 0.004 : 0.001;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    const auto solver = makeSolver(SolverMethod::GaussSeidel, scene, mesh);
+    for (int k = 0; k < 500 && solver->step().residual > 1e-9; ++k) {
+    }
+    const RayCaster rays(scene);
+    ProbeOptions options;
+    options.gatherRaysPerSide = 16;
+    const Probe probe(scene, mesh, &rays, options);
+    PointReference reference{meshing.maxPatchArea, {}};
+    for (const ProbePoint& p : cornellProbePoints()) {
+        const SurfacePoint at = probe.locate(p.point, p.normal);
+        const Material& material = scene.materials[scene.surfaces[at.surface].material];
+        const Rgb irradiance = probe.irradiance(at, p.normal, solver->solution()).value();
+        reference.radiosity.push_back(material.exitance.value() + material.reflectance * irradiance);
+    }
+    return solved[quick] = std::move(reference);
+}
+
+PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference) {
+    const Probe probe(box.scene, box.mesh, nullptr);
+    PointError error;
+    const auto& points = cornellProbePoints();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const SurfacePoint at = probe.locate(points[i].point, points[i].normal);
+        const Rgb b = solver.radiosityAt(at.surface, at.face, at.point);
+        for (int band = 0; band < 3; ++band) {
+            const double off = std::abs(b[band] / reference.radiosity[i][band] - 1);
+            error.mean += off / (3.0 * static_cast<double>(points.size()));
+            if (off > error.worst) {
+                error.worst = off;
+                error.worstWhere = points[i].where;
+            }
+        }
+    }
+    return error;
 }
 
 FurnaceError furnaceError(std::size_t elements, double linkEpsilonScale) {

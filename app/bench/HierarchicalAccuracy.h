@@ -3,12 +3,19 @@
 // surface means against a fine Gauss-Seidel solve, and the same setup's leaves in the furnace against
 // the closed form. Shared so that every hierarchical table states accuracy by the same yardstick.
 #include <cstddef>
+#include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "radiometry/mesh/ElementTree.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/units/Quantity.h"
+
+namespace radiant {
+class HierarchicalSolver;
+}
 
 namespace radiant::app {
 
@@ -34,6 +41,32 @@ struct GaussSeidelReference {
 };
 /// Solved once per process and per `quick`: the fine one takes seconds and several tables compare with it.
 const GaussSeidelReference& cornellGaussSeidelReference(bool quick);
+
+/// Where the hierarchical tables read the Cornell box at points: floor, ceiling, the three walls,
+/// both blocks' sides and the short block's top, corners and penumbrae included.
+struct ProbePoint {
+    const char* where;
+    glm::dvec3 point, normal;  ///< m; the normal points out of the surface
+};
+const std::vector<ProbePoint>& cornellProbePoints();
+
+/// The reference radiosity at cornellProbePoints (W/m^2 per band): Gauss-Seidel to residual 1e-9 on
+/// fine patches, then B = E + rho E(x) with E(x) the probe's exact-kernel gather at the point from those
+/// patches (the patches' own interpolation is not used: its error near corners is the largest).
+struct PointReference {
+    double patchArea = 0;  ///< m^2
+    std::vector<Rgb> radiosity;
+};
+/// Solved once per process and per `quick` (the fine one takes about a minute).
+const PointReference& cornellPointReference(bool quick);
+
+/// A hierarchical solve's value at the points (radiosityAt) against the reference: mean and worst
+/// relative difference over points and bands, and where the worst is.
+struct PointError {
+    double mean = 0, worst = 0;
+    std::string worstWhere;
+};
+PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference);
 
 /// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
 /// worst relative difference over the leaves.

@@ -18,7 +18,9 @@
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
+#include "radiometry/sources/DiffuseEmitter.h"
 #if __has_include("radiometry/scene/SceneLibrary.h")
 #include "radiometry/scene/SceneLibrary.h"
 #define RADIANT_PROBE_HAS_SCENE_LIBRARY 1
@@ -36,6 +38,7 @@ struct ProbeCommandOptions {
     std::string method = "gauss-seidel";
     double maxPatchArea = MeshingOptions{}.maxPatchArea;
     double tolerance = 1e-4;
+    double linkTolerance = SolverOptions{}.linkEpsilon;
     std::size_t maxIterations = 10000;
     std::string json = "-";
 };
@@ -100,6 +103,8 @@ int runProbe(const ProbeCommandOptions& options) {
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
     if (!(options.tolerance > 0))
         throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
+    if (!(options.linkTolerance > 0))
+        throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
     const SolverMethod method = parseMethod(options.method);
 
     const Scene scene = loadProbeScene(options.scene);
@@ -115,8 +120,11 @@ int runProbe(const ProbeCommandOptions& options) {
     std::string solution;
     std::size_t iterations = 0;
     double residual = 1;
+    std::optional<Rgb> gatheredAtPoint;  // hierarchical: the links' gather at the point itself
     try {
-        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+        SolverOptions solverOptions;
+        solverOptions.linkEpsilon = options.linkTolerance;
+        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
             ++iterations;
@@ -124,6 +132,8 @@ int runProbe(const ProbeCommandOptions& options) {
         }
         radiosity = solver->solution();
         solution = "solved";
+        if (const auto* hierarchical = dynamic_cast<const HierarchicalSolver*>(solver.get()))
+            gatheredAtPoint = hierarchical->radiosityAt(at.surface, at.face, at.point);
     } catch (const BudgetError&) {
         throw;
     } catch (const RadiantError& e) {
@@ -134,7 +144,11 @@ int runProbe(const ProbeCommandOptions& options) {
         iterations = 0;
     }
 
-    const ProbeReading reading = probe.measure(at, normal, radiosity, target);
+    ProbeReading reading = probe.measure(at, normal, radiosity, target);
+    if (gatheredAtPoint) {
+        reading.radiosity = RadiosityRgb(*gatheredAtPoint);
+        reading.radiance = radianceFromRadiosity(reading.radiosity);
+    }
     nlohmann::json out;
     out["scene"] = scene.name;
     out["method"] = std::string(methodName(method));
@@ -182,6 +196,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     return {sub, [options] { return runProbe(*options); }};
 }

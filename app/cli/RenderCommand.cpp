@@ -27,6 +27,7 @@ struct RenderOptions {
     int height = 1000;
     std::string method = "progressive";
     double maxPatchArea = 0.01;
+    double linkTolerance = SolverOptions{}.linkEpsilon;
     bool falseColour = false;
     bool logScale = false;
     bool flat = false;
@@ -46,6 +47,8 @@ int runRender(const RenderOptions& options) {
                                                          std::to_string(options.height));
     if (!(options.maxPatchArea > 0))
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
+    if (!(options.linkTolerance > 0))
+        throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
     const SolverMethod method = parseMethod(options.method);
     // The GL context first, so a missing display fails before the solve rather than after. Any
     // window will do: the picture goes to a framebuffer of the requested size.
@@ -57,7 +60,9 @@ int runRender(const RenderOptions& options) {
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
-    const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+    SolverOptions solverOptions;
+    solverOptions.linkEpsilon = options.linkTolerance;
+    const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
     IterationStats stats;
     do stats = solver->step();
     while (stats.residual > kTolerance && stats.iteration < kMaxIterations);
@@ -104,6 +109,7 @@ Subcommand addRenderCommand(CLI::App& root) {
                     "jacobi, gauss-seidel, progressive, hierarchical or importance")
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
+    sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_flag("--false-colour,--false-color", options->falseColour,
                   "total radiosity in W/m^2 through viridis instead of the tone-mapped picture");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");
