@@ -68,7 +68,7 @@ const std::vector<ProbePoint>& cornellProbePoints() {
         {"ceiling, back", {0.45, 0.5488, 0.50}, {0, -1, 0}},
         {"back wall, middle", {0.28, 0.27, 0.5592}, {0, 0, -1}},
         {"back wall, top corner", {0.03, 0.52, 0.5592}, {0, 0, -1}},
-        {"red wall, middle", {0.5536, 0.2744, 0.2796}, {-1, 0, 0}},
+        {"red wall, middle", {0.5544, 0.2744, 0.2796}, {-1, 0, 0}},
         {"green wall, low", {0, 0.10, 0.10}, {1, 0, 0}},
         {"green wall, high", {0, 0.45, 0.45}, {1, 0, 0}},
         {"short block, front side", {0.21, 0.08, 0.0895}, glm::dvec3(49, 0, -160) / 167.33},

@@ -27,12 +27,12 @@ void HierarchicalSolver::indexLinksByReceiver() {
 
 template <class Visibility>
 void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility,
-                                       std::vector<GatherTerm>& out) const {
+                                       bool everyLink, std::vector<GatherTerm>& out) const {
     const glm::dvec3& n = tree_.polygon(leaf).normal;
     for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
         for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
             const std::uint32_t i = receiverLinks_[k];
-            if (links_[i].formFactor <= 0 && !links_[i].partiallyVisible()) continue;
+            if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible()) continue;
             const PatchPolygon& q = tree_.polygon(links_[i].source);
             const double f = hierarchical::pointToElementFormFactor(x, n, q);
             if (f <= 0) continue;
@@ -57,7 +57,7 @@ void HierarchicalSolver::buildPatchRows() {
             const int order = atCentroid != kNoElement && 4 * tree_.area(atCentroid) < patch.area ? 3 : 2;
             const auto gatherAt = [&](const glm::dvec3& x, double weight) {
                 const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
-                if (leaf != kNoElement) gatherTermsAt(leaf, x, weight, shared, row);
+                if (leaf != kNoElement) gatherTermsAt(leaf, x, weight, shared, false, row);
             };
             if (patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
             std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
@@ -96,14 +96,14 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
     // On the element's plane: a probe point may lie a hair off it.
     const glm::dvec3 x = point - glm::dot(point - element.centroid, element.normal) * element.normal;
     std::vector<GatherTerm> terms;
+    // Every link casts its own rays from x: a link's four rays may have called a penumbra fully lit
+    // or fully dark, which the point would inherit.
     const auto rays = [&](std::uint32_t link, const PatchPolygon& q) {
-        const double share = linkShare_[link];
-        const bool mixed = links_[link].partiallyVisible() || (share > 0 && share < 1);
-        if (!mixed || caster_ == nullptr) return share;
+        if (caster_ == nullptr) return static_cast<double>(linkShare_[link]);
         return hierarchical::pointVisibility(x, element.normal, q, *caster_, kPointVisibilityRaysPerSide,
                                              hierarchical::mix(options_.seed ^ link));
     };
-    gatherTermsAt(leaf, x, 1.0, rays, terms);
+    gatherTermsAt(leaf, x, 1.0, rays, caster_ != nullptr, terms);
     Rgb irradiance(0.0);
     for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
     return surfaceExitance_[surface] + surfaceReflectance_[surface] * irradiance;

@@ -60,8 +60,8 @@ public:
     /// deepest one under its centroid).
     [[nodiscard]] std::span<const ElementIndex> patchElements() const { return patchElement_; }
     /// Radiosity at `point` on face `face` of surface `surface` (W/m^2 per band): E + rho H(x), H
-    /// gathered at x over the links of every element containing x with the exact point kernel, and
-    /// for partly visible links a visibility of x's own (kPointVisibilityRaysPerSide^2 rays). What the
+    /// gathered at x over the links of every element containing x with the exact point kernel and a
+    /// visibility of x's own (kPointVisibilityRaysPerSide^2 rays per link). What the
     /// probe reads: the leaf's constant is off by the kernel's variation across the leaf. Zero for a
     /// face that does not exist. Thread-safe against other const calls, not against step().
     [[nodiscard]] Rgb radiosityAt(std::uint32_t surface, std::uint32_t face, const glm::dvec3& point) const;
@@ -131,9 +131,10 @@ private:
     };
     /// Links grouped by receiver (HierarchicalGather.cpp).
     void indexLinksByReceiver();
-    /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors.
+    /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors (`everyLink`:
+    /// also those whose rays found them hidden).
     template <class Visibility>
-    void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility,
+    void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
                        std::vector<GatherTerm>& out) const;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
