@@ -17,8 +17,8 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     auto scene = std::make_shared<std::string>("cornell-box");
     root.add_option("scene", *scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
 
-    const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addRenderCommand(root),
-                                   addBenchCommand(root)};
+    const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addReferenceCommand(root),
+                                   addRenderCommand(root), addBenchCommand(root)};
     try {
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

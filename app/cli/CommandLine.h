@@ -1,5 +1,5 @@
 #pragma once
-// `radiant [SCENE]` opens the lab; `radiant solve|probe|render|bench ...` run without a window.
+// `radiant [SCENE]` opens the lab; `radiant solve|probe|reference|render|bench ...` run without a window.
 // Exit status 0 on success, 2 on bad arguments or bad input (one line on stderr).
 #include <functional>
 #include <vector>
@@ -29,6 +29,7 @@ struct Subcommand {
 };
 Subcommand addSolveCommand(CLI::App& root);
 Subcommand addProbeCommand(CLI::App& root);
+Subcommand addReferenceCommand(CLI::App& root);
 Subcommand addRenderCommand(CLI::App& root);
 Subcommand addBenchCommand(CLI::App& root);
 
