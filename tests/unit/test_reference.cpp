@@ -291,7 +291,7 @@ TEST_CASE("a point on no surface, a zero normal and a normal facing away are err
     CHECK(floor.normal.y == doctest::Approx(1).scale(0));
 }
 
-TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error; bad input exits 2") {
+TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error, bad input exits 2") {
     // The built-in: a black emitter [0,1]^2 at y = 0 (exitance 1) and a receiver of rho 0.5 at y = 1.
     const std::string output = "/tmp/radiant-test-reference-" + std::to_string(::getpid()) + ".json";
     const std::string command = std::string(RADIANT_BINARY) +
