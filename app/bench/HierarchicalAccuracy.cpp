@@ -1,11 +1,13 @@
 #include "app/bench/HierarchicalAccuracy.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/probe/Probe.h"
+#include "radiometry/reference/ReferenceRun.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
@@ -84,43 +86,58 @@ const PointReference& cornellPointReference(bool quick) {
     static std::map<bool, PointReference> solved;
     if (const auto found = solved.find(quick); found != solved.end()) return found->second;
     const Scene scene = makeCornellBox();
-    MeshingOptions meshing;
-    meshing.maxPatchArea = quick ? 0.004 : 0.001;
-    const PatchMesh mesh = meshScene(scene, meshing);
-    const auto solver = makeSolver(SolverMethod::GaussSeidel, scene, mesh);
-    for (int k = 0; k < 500 && solver->step().residual > 1e-9; ++k) {
-    }
     const RayCaster rays(scene);
-    ProbeOptions options;
-    options.gatherRaysPerSide = 16;
-    const Probe probe(scene, mesh, &rays, options);
-    PointReference reference{meshing.maxPatchArea, {}};
+    const PathTracer tracer(scene, rays);
+    ReferenceStop stop;
+    stop.relativeStandardError = quick ? 0.005 : 0.001;
+    stop.time = std::chrono::duration<double>(quick ? 2.0 : 30.0);
+    PointReference reference{stop.relativeStandardError.value_or(0), {}, 0};
     for (const ProbePoint& p : cornellProbePoints()) {
-        const SurfacePoint at = probe.locate(p.point, p.normal);
-        const Material& material = scene.materials[scene.surfaces[at.surface].material];
-        const Rgb irradiance = probe.irradiance(at, p.normal, solver->solution()).value();
-        reference.radiosity.push_back(material.exitance.value() + material.reflectance * irradiance);
+        ReferenceRun run(tracer, locateReferencePoint(scene, p.point, p.normal));
+        const ReferenceEstimate estimate = run.runUntil(stop);
+        reference.radiosity.push_back(estimate.radiosity.value());
+        reference.worstStandardError = std::max(reference.worstStandardError, estimate.relativeStandardError());
     }
     return solved[quick] = std::move(reference);
 }
 
-PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference) {
+namespace {
+
+/// Per point and band, the relative difference of the solver's value from the reference.
+std::vector<Rgb> bandErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                            const PointReference& reference) {
     const Probe probe(box.scene, box.mesh, nullptr);
-    PointError error;
+    std::vector<Rgb> errors;
     const auto& points = cornellProbePoints();
     for (std::size_t i = 0; i < points.size(); ++i) {
         const SurfacePoint at = probe.locate(points[i].point, points[i].normal);
         const Rgb b = solver.radiosityAt(at.surface, at.face, at.point);
+        errors.push_back(glm::abs(b / reference.radiosity[i] - 1.0));
+    }
+    return errors;
+}
+
+} // namespace
+
+PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference) {
+    PointError error;
+    const std::vector<Rgb> errors = bandErrors(solver, box, reference);
+    for (std::size_t i = 0; i < errors.size(); ++i)
         for (int band = 0; band < 3; ++band) {
-            const double off = std::abs(b[band] / reference.radiosity[i][band] - 1);
-            error.mean += off / (3.0 * static_cast<double>(points.size()));
-            if (off > error.worst) {
-                error.worst = off;
-                error.worstWhere = points[i].where;
+            error.mean += errors[i][band] / (3.0 * static_cast<double>(errors.size()));
+            if (errors[i][band] > error.worst) {
+                error.worst = errors[i][band];
+                error.worstWhere = cornellProbePoints()[i].where;
             }
         }
-    }
     return error;
+}
+
+std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                                const PointReference& reference) {
+    std::vector<double> worst;
+    for (const Rgb& e : bandErrors(solver, box, reference)) worst.push_back(std::max({e.x, e.y, e.z}));
+    return worst;
 }
 
 FurnaceError furnaceError(std::size_t elements, double linkEpsilonScale) {

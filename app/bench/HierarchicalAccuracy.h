@@ -50,14 +50,15 @@ struct ProbePoint {
 };
 const std::vector<ProbePoint>& cornellProbePoints();
 
-/// The reference radiosity at cornellProbePoints (W/m^2 per band): Gauss-Seidel to residual 1e-9 on
-/// fine patches, then B = E + rho E(x) with E(x) the probe's exact-kernel gather at the point from those
-/// patches (the patches' own interpolation is not used: its error near corners is the largest).
+/// The reference radiosity at cornellProbePoints (W/m^2 per band): the path tracer of
+/// radiometry/reference (independent of every radiosity code path), run at each point until its
+/// relative standard error is at most `targetStandardError` (or 30 s).
 struct PointReference {
-    double patchArea = 0;  ///< m^2
+    double targetStandardError = 0;
     std::vector<Rgb> radiosity;
+    double worstStandardError = 0;  ///< relative, over points and bands, as reached
 };
-/// Solved once per process and per `quick` (the fine one takes about a minute).
+/// Traced once per process and per `quick` (the full one takes a minute or two).
 const PointReference& cornellPointReference(bool quick);
 
 /// A hierarchical solve's value at the points (radiosityAt) against the reference: mean and worst
@@ -67,6 +68,9 @@ struct PointError {
     std::string worstWhere;
 };
 PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference);
+/// Per point, the worst relative difference over the bands.
+std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                                const PointReference& reference);
 
 /// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
 /// worst relative difference over the leaves.

@@ -241,6 +241,19 @@ inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
     return {mean, highest - lowest};
 }
 
+/// F(receiver -> source) unoccluded, as linkKernel's mean (the 4-point rule of the receiver's
+/// children's centroids, the 3 x 3 Gauss rule when close), without its spread.
+inline double meanKernel(const PatchPolygon& p, const PatchPolygon& q) {
+    const glm::dvec3 apart = p.centroid - q.centroid;
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    if (glm::dot(apart, apart) < 2.25 * reach * reach) return gaussMeanKernel(p, q);
+    const double nearestSample = std::max(0.0, glm::length(apart) - std::sqrt(p.area));
+    const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
+    double sum = 0;
+    for (const glm::dvec3& x : childCentroids(p)) sum += pointToElementFormFactor(x, p.normal, q, far);
+    return 0.25 * sum;
+}
+
 /// True when some of each element lies strictly in front of the other: otherwise no light passes.
 inline bool facing(const PatchPolygon& a, const PatchPolygon& b) {
     const auto someInFront = [](const PatchPolygon& of, const PatchPolygon& plane) {

@@ -109,4 +109,47 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
     return surfaceExitance_[surface] + surfaceReflectance_[surface] * irradiance;
 }
 
+void HierarchicalSolver::buildLeafRows() {
+    indexLinksByReceiver();
+    const std::size_t n = tree_.size();
+    std::vector<std::vector<GatherTerm>> rows(n);
+    parallelChunks(n, threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t i = from; i < to; ++i) {
+            const auto leaf = static_cast<ElementIndex>(i);
+            if (!tree_.isLeaf(leaf)) continue;
+            const PatchPolygon& p = tree_.polygon(leaf);
+            std::vector<GatherTerm>& row = rows[i];
+            for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
+                for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+                    const Link& link = links_[receiverLinks_[k]];
+                    if (link.formFactor <= 0) continue;
+                    // The leaf's own links already hold its mean; an ancestor's hold the ancestor's.
+                    const double f = e == leaf ? static_cast<double>(link.formFactor)
+                                               : hierarchical::meanKernel(p, tree_.polygon(link.source)) *
+                                                     static_cast<double>(linkShare_[receiverLinks_[k]]);
+                    if (f > 0) row.push_back({link.source, static_cast<float>(f)});
+                }
+        }
+    });
+    leafRowBegin_.assign(n + 1, 0);
+    for (std::size_t e = 0; e < n; ++e) leafRowBegin_[e + 1] = leafRowBegin_[e] + rows[e].size();
+    leafRows_.clear();
+    leafRows_.reserve(leafRowBegin_.back());
+    for (const auto& row : rows) leafRows_.insert(leafRows_.end(), row.begin(), row.end());
+    leafIrradiance_.assign(n, Rgb(0.0));
+    leafRowsCurrent_ = true;
+}
+
+void HierarchicalSolver::gatherLeafRows() {
+    const auto& radiosity = tree_.radiosity();
+    parallelChunks(tree_.size(), threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = from; e < to; ++e) {
+            Rgb sum(0.0);
+            for (std::size_t k = leafRowBegin_[e]; k < leafRowBegin_[e + 1]; ++k)
+                sum += static_cast<double>(leafRows_[k].weight) * radiosity[leafRows_[k].source];
+            leafIrradiance_[e] = sum;
+        }
+    });
+}
+
 } // namespace radiant

@@ -254,6 +254,7 @@ std::size_t HierarchicalSolver::refine() {
         links_.resize(kept);
         linkShare_.resize(kept);
         patchRowsCurrent_ = false;
+        leafRowsCurrent_ = false;
     }
     for (const std::size_t rays : raysPerThread_) rays_ += rays;
     return created;
@@ -292,7 +293,8 @@ double HierarchicalSolver::pushPull() {
         pushedIrradiance_[e] = gathered[e] + (parent == kNoElement ? Rgb(0.0) : pushedIrradiance_[parent]);
         if (!tree_.isLeaf(e)) continue;
         const std::uint32_t s = tree_.surface(e);
-        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * pushedIrradiance_[e];
+        const Rgb& irradiance = leafRowsCurrent_ ? leafIrradiance_[e] : pushedIrradiance_[e];
+        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
         change += tree_.area(e) * glm::abs(updated - radiosity[e]);
         emitted += tree_.area(e) * surfaceExitance_[s];
         radiosity[e] = updated;
@@ -340,6 +342,8 @@ IterationStats HierarchicalSolver::step() {
     IterationStats stats;
     stats.iteration = stats_.iteration + 1;
     stats.linksRefined = refine();
+    if (!leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) buildLeafRows();
+    if (leafRowsCurrent_) gatherLeafRows();
     gather();
     stats.residual = pushPull();
     afterGather();

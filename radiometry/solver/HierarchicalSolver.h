@@ -138,6 +138,15 @@ private:
                        std::vector<GatherTerm>& out) const;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
+    /// Each leaf's gather row: every link of the leaf and its ancestors with the form factor from the
+    /// leaf itself (its own mean of the kernel), in place of the ancestors' means pushed down as
+    /// constants. Rebuilt when refinement changed the links.
+    void buildLeafRows();
+    /// leafIrradiance_ from the leaf rows and the current radiosity (both cores).
+    void gatherLeafRows();
+    /// Above this many leaves the rows' memory (about 8 bytes per link of a leaf's chain, ~60 per leaf)
+    /// is not spent and push-pull pushes the ancestors' irradiance down as constants.
+    static constexpr std::size_t kMaxLeavesWithRows = 1u << 18;
     [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
 
@@ -165,6 +174,10 @@ private:
     std::vector<std::size_t> patchRowBegin_;
     std::vector<GatherTerm> patchRows_;
     bool patchRowsCurrent_ = false;
+    std::vector<std::size_t> leafRowBegin_;  ///< per element (rows only at leaves)
+    std::vector<GatherTerm> leafRows_;
+    std::vector<Rgb> leafIrradiance_;
+    bool leafRowsCurrent_ = false;
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
