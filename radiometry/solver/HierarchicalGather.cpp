@@ -34,15 +34,29 @@ void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, d
             const std::uint32_t i = receiverLinks_[k];
             if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible()) continue;
             const PatchPolygon& q = tree_.polygon(links_[i].source);
-            const double f = hierarchical::pointToElementFormFactor(x, n, q);
-            if (f <= 0) continue;
+            if (hierarchical::pointToElementFormFactor(x, n, q) <= 0) continue;
             const double v = visibility(i, q);
-            if (v > 0) out.push_back({links_[i].source, static_cast<float>(weight * f * v)});
+            if (v > 0) expandSource(links_[i].source, x, n, weight * v, out);
         }
 }
 
+void HierarchicalSolver::expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                                      std::vector<GatherTerm>& out) const {
+    // A source large for its distance from x is read through its children: its radiosity varies
+    // across it (bright under the light, dark in a corner) where x's kernel varies too, and the
+    // product's mean is not the means' product.
+    const PatchPolygon& q = tree_.polygon(source);
+    const glm::dvec3 d = q.centroid - x;
+    if (!tree_.isLeaf(source) && q.area > kSourceExpansion * glm::dot(d, d)) {
+        const ElementIndex first = tree_.firstChild(source);
+        for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(c, x, n, weight, out);
+        return;
+    }
+    const double f = hierarchical::pointToElementFormFactor(x, n, q);
+    if (f > 0) out.push_back({source, static_cast<float>(weight * f)});
+}
+
 void HierarchicalSolver::buildPatchRows() {
-    indexLinksByReceiver();
     std::vector<std::vector<GatherTerm>> rows(patches_.size());
     parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
         // A link's visible share, the same for every point of its receiver in the patch rows (rays per
@@ -91,7 +105,7 @@ Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
 Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, const glm::dvec3& point) const {
     const ElementIndex leaf = tree_.locate(surface, face, point);
     if (leaf == kNoElement) return Rgb(0.0);
-    if (!patchRowsCurrent_) return tree_.radiosity()[leaf];  // before the first step: B = E
+    if (stats_.iteration == 0) return tree_.radiosity()[leaf];  // before the first step: B = E
     const PatchPolygon& element = tree_.polygon(leaf);
     // On the element's plane: a probe point may lie a hair off it.
     const glm::dvec3 x = point - glm::dot(point - element.centroid, element.normal) * element.normal;
@@ -110,7 +124,6 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
 }
 
 void HierarchicalSolver::buildLeafRows() {
-    indexLinksByReceiver();
     const std::size_t n = tree_.size();
     std::vector<std::vector<GatherTerm>> rows(n);
     parallelChunks(n, threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {

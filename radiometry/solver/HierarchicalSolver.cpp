@@ -257,6 +257,7 @@ std::size_t HierarchicalSolver::refine() {
         leafRowsCurrent_ = false;
     }
     for (const std::size_t rays : raysPerThread_) rays_ += rays;
+    if (anySplit || receiverLinkBegin_.size() != tree_.size() + 1) indexLinksByReceiver();
     return created;
 }
 
@@ -332,6 +333,7 @@ void HierarchicalSolver::mapSolution(bool gathered) {
     solution_.resize(patches_.size());
     const auto& radiosity = tree_.radiosity();
     if (gathered && !patchRowsCurrent_) buildPatchRows();
+    gathered = gathered && patchRowsCurrent_;
     for (std::size_t i = 0; i < patches_.size(); ++i)
         solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i) : radiosity[patchElement_[i]];
     afterSolutionMapped();
@@ -342,12 +344,15 @@ IterationStats HierarchicalSolver::step() {
     IterationStats stats;
     stats.iteration = stats_.iteration + 1;
     stats.linksRefined = refine();
-    if (!leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) buildLeafRows();
+    // The rows cost a form factor per leaf and per link of its chain: they are built once refinement
+    // has settled (a step that made no links), and until then push-pull pushes constants.
+    const bool settled = stats.linksRefined == 0;
+    if (settled && !leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) buildLeafRows();
     if (leafRowsCurrent_) gatherLeafRows();
     gather();
     stats.residual = pushPull();
     afterGather();
-    mapSolution(true);
+    mapSolution(settled);
     stats.links = links_.size();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats_ = stats;

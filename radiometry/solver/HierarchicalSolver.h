@@ -122,8 +122,9 @@ private:
     void gather();
     /// Returns the residual of the radiosity the gather started from.
     double pushPull();
-    /// Refreshes the per-patch solution: `gathered`, each patch's mean of radiosityAt (by its patch
-    /// row); otherwise (before the first step, after reset) the elements' own values.
+    /// Refreshes the per-patch solution: `gathered` (refinement has settled), each patch's mean of the
+    /// links' gather (by its patch row, kept while the links stay); otherwise (while refining, before
+    /// the first step, after reset) the elements' own values.
     void mapSolution(bool gathered);
     struct GatherTerm {
         ElementIndex source;
@@ -136,6 +137,11 @@ private:
     template <class Visibility>
     void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
                        std::vector<GatherTerm>& out) const;
+    /// Appends weight x F(x -> source), or the same for the source's children where it is large for its
+    /// distance from x (area over squared distance above kSourceExpansion).
+    void expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                      std::vector<GatherTerm>& out) const;
+    static constexpr double kSourceExpansion = 0.05;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
     /// Each leaf's gather row: every link of the leaf and its ancestors with the form factor from the
