@@ -136,11 +136,26 @@ void HierarchicalSolver::buildLeafRows() {
                 for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
                     const Link& link = links_[receiverLinks_[k]];
                     if (link.formFactor <= 0) continue;
-                    // The leaf's own links already hold its mean; an ancestor's hold the ancestor's.
-                    const double f = e == leaf ? static_cast<double>(link.formFactor)
-                                               : hierarchical::meanKernel(p, tree_.polygon(link.source)) *
-                                                     static_cast<double>(linkShare_[receiverLinks_[k]]);
-                    if (f > 0) row.push_back({link.source, static_cast<float>(f)});
+                    // The leaf's own links already hold its mean; an ancestor's hold the ancestor's, so
+                    // the leaf takes its own form factor, from the source's children where the source
+                    // is large for its distance (as expandSource does at a point).
+                    if (e == leaf) {
+                        row.push_back({link.source, link.formFactor});
+                        continue;
+                    }
+                    const double share = linkShare_[receiverLinks_[k]];
+                    const auto add = [&](const auto& self, ElementIndex q) -> void {
+                        const PatchPolygon& polygon = tree_.polygon(q);
+                        const glm::dvec3 d = polygon.centroid - p.centroid;
+                        if (!tree_.isLeaf(q) && polygon.area > kSourceExpansion * glm::dot(d, d)) {
+                            for (ElementIndex c = tree_.firstChild(q); c < tree_.firstChild(q) + ElementTree::kChildCount; ++c)
+                                self(self, c);
+                            return;
+                        }
+                        const double f = hierarchical::meanKernel(p, polygon) * share;
+                        if (f > 0) row.push_back({q, static_cast<float>(f)});
+                    };
+                    add(add, link.source);
                 }
         }
     });

@@ -66,6 +66,9 @@ public:
     /// face that does not exist. Thread-safe against other const calls, not against step().
     [[nodiscard]] Rgb radiosityAt(std::uint32_t surface, std::uint32_t face, const glm::dvec3& point) const;
     static constexpr int kPointVisibilityRaysPerSide = 8;
+    /// Above this many leaves the leaf rows' memory (about 8 bytes per link of a leaf's chain, ~60 per
+    /// leaf) is not spent and push-pull pushes the ancestors' irradiance down as constants.
+    static constexpr std::size_t kMaxLeavesWithRows = 1u << 18;
     /// Heap bytes held by elements, links and the solver's per-element arrays.
     [[nodiscard]] std::size_t bytes() const;
     /// Visibility rays cast by refinement so far.
@@ -150,9 +153,7 @@ private:
     void buildLeafRows();
     /// leafIrradiance_ from the leaf rows and the current radiosity (both cores).
     void gatherLeafRows();
-    /// Above this many leaves the rows' memory (about 8 bytes per link of a leaf's chain, ~60 per leaf)
-    /// is not spent and push-pull pushes the ancestors' irradiance down as constants.
-    static constexpr std::size_t kMaxLeavesWithRows = 1u << 18;
+
     [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
 
