@@ -202,7 +202,8 @@ BenchTable benchHierarchicalPeers(const BenchOptions& options) {
     for (auto& defaultRow : defaultRows) table.rows.push_back(std::move(defaultRow));
 
     table.notes = {
-        "The peers' accuracy is not measured here: they cannot be run on this machine (no network, no sources).",
+        "At equal accuracy (issue #14's RenderPark figures against a path tracer) see the hierarchical-accuracy table;",
+        "this one keeps issue #5's comparison at equal size. The peers cannot be run on this machine.",
         "Equal element and link counts stand in for equal accuracy: each peer row runs Radiant at the peer's element",
         "count (hierarchicalSetupForElements) with linkEpsilon scaled down until it converges with at least the peer's",
         "links. The peers' times are the issue's figures for this machine; target = the peer's lower time / 2.",

@@ -1,9 +1,13 @@
 #include "app/bench/HierarchicalAccuracy.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <map>
 
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/probe/Probe.h"
+#include "radiometry/reference/ReferenceRun.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/Solver.h"
@@ -53,6 +57,87 @@ const GaussSeidelReference& cornellGaussSeidelReference(bool quick) {
     for (int k = 0; k < 500 && solver->step().residual > 1e-9; ++k) {
     }
     return solved[quick] = {meshing.maxPatchArea, surfaceMeans(scene, mesh, solver->solution())};
+}
+
+const std::vector<ProbePoint>& cornellProbePoints() {
+    static const std::vector<ProbePoint> points = {
+        {"floor, front", {0.28, 0, 0.05}, {0, 1, 0}},
+        {"floor, back corner by the red wall", {0.52, 0, 0.53}, {0, 1, 0}},
+        {"floor, between the blocks", {0.30, 0, 0.20}, {0, 1, 0}},
+        {"floor, beside the short block", {0.06, 0, 0.15}, {0, 1, 0}},
+        {"ceiling, front corner", {0.05, 0.5488, 0.05}, {0, -1, 0}},
+        {"ceiling, beside the light", {0.28, 0.5488, 0.18}, {0, -1, 0}},
+        {"ceiling, back", {0.45, 0.5488, 0.50}, {0, -1, 0}},
+        {"back wall, middle", {0.28, 0.27, 0.5592}, {0, 0, -1}},
+        {"back wall, top corner", {0.03, 0.52, 0.5592}, {0, 0, -1}},
+        {"red wall, middle", {0.5544, 0.2744, 0.2796}, {-1, 0, 0}},
+        {"green wall, low", {0, 0.10, 0.10}, {1, 0, 0}},
+        {"green wall, high", {0, 0.45, 0.45}, {1, 0, 0}},
+        {"short block, front side", {0.21, 0.08, 0.0895}, glm::dvec3(49, 0, -160) / 167.33},
+        {"short block, green-wall side", {0.106, 0.08, 0.145}, glm::dvec3(-160, 0, -48) / 167.04},
+        {"short block, top", {0.19, 0.165, 0.17}, {0, 1, 0}},
+        {"tall block, red-wall side", {0.4475, 0.15, 0.3265}, glm::dvec3(159, 0, -49) / 166.38},
+        {"tall block, front side", {0.344, 0.20, 0.2715}, glm::dvec3(-49, 0, -158) / 165.42},
+    };
+    return points;
+}
+
+const PointReference& cornellPointReference(bool quick) {
+    static std::map<bool, PointReference> solved;
+    if (const auto found = solved.find(quick); found != solved.end()) return found->second;
+    const Scene scene = makeCornellBox();
+    const RayCaster rays(scene);
+    const PathTracer tracer(scene, rays);
+    ReferenceStop stop;
+    stop.relativeStandardError = quick ? 0.005 : 0.001;
+    stop.time = std::chrono::duration<double>(quick ? 2.0 : 30.0);
+    PointReference reference{stop.relativeStandardError.value_or(0), {}, 0};
+    for (const ProbePoint& p : cornellProbePoints()) {
+        ReferenceRun run(tracer, locateReferencePoint(scene, p.point, p.normal));
+        const ReferenceEstimate estimate = run.runUntil(stop);
+        reference.radiosity.push_back(estimate.radiosity.value());
+        reference.worstStandardError = std::max(reference.worstStandardError, estimate.relativeStandardError());
+    }
+    return solved[quick] = std::move(reference);
+}
+
+namespace {
+
+/// Per point and band, the relative difference of the solver's value from the reference.
+std::vector<Rgb> bandErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                            const PointReference& reference) {
+    const Probe probe(box.scene, box.mesh, nullptr);
+    std::vector<Rgb> errors;
+    const auto& points = cornellProbePoints();
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const SurfacePoint at = probe.locate(points[i].point, points[i].normal);
+        const Rgb b = solver.radiosityAt(at.surface, at.face, at.point);
+        errors.push_back(glm::abs(b / reference.radiosity[i] - 1.0));
+    }
+    return errors;
+}
+
+} // namespace
+
+PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference) {
+    PointError error;
+    const std::vector<Rgb> errors = bandErrors(solver, box, reference);
+    for (std::size_t i = 0; i < errors.size(); ++i)
+        for (int band = 0; band < 3; ++band) {
+            error.mean += errors[i][band] / (3.0 * static_cast<double>(errors.size()));
+            if (errors[i][band] > error.worst) {
+                error.worst = errors[i][band];
+                error.worstWhere = cornellProbePoints()[i].where;
+            }
+        }
+    return error;
+}
+
+std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                                const PointReference& reference) {
+    std::vector<double> worst;
+    for (const Rgb& e : bandErrors(solver, box, reference)) worst.push_back(std::max({e.x, e.y, e.z}));
+    return worst;
 }
 
 FurnaceError furnaceError(std::size_t elements, double linkEpsilonScale) {

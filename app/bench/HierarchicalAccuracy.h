@@ -3,12 +3,19 @@
 // surface means against a fine Gauss-Seidel solve, and the same setup's leaves in the furnace against
 // the closed form. Shared so that every hierarchical table states accuracy by the same yardstick.
 #include <cstddef>
+#include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "radiometry/mesh/ElementTree.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/units/Quantity.h"
+
+namespace radiant {
+class HierarchicalSolver;
+}
 
 namespace radiant::app {
 
@@ -34,6 +41,36 @@ struct GaussSeidelReference {
 };
 /// Solved once per process and per `quick`: the fine one takes seconds and several tables compare with it.
 const GaussSeidelReference& cornellGaussSeidelReference(bool quick);
+
+/// Where the hierarchical tables read the Cornell box at points: floor, ceiling, the three walls,
+/// both blocks' sides and the short block's top, corners and penumbrae included.
+struct ProbePoint {
+    const char* where;
+    glm::dvec3 point, normal;  ///< m; the normal points out of the surface
+};
+const std::vector<ProbePoint>& cornellProbePoints();
+
+/// The reference radiosity at cornellProbePoints (W/m^2 per band): the path tracer of
+/// radiometry/reference (independent of every radiosity code path), run at each point until its
+/// relative standard error is at most `targetStandardError` (or 30 s).
+struct PointReference {
+    double targetStandardError = 0;
+    std::vector<Rgb> radiosity;
+    double worstStandardError = 0;  ///< relative, over points and bands, as reached
+};
+/// Traced once per process and per `quick` (the full one takes a minute or two).
+const PointReference& cornellPointReference(bool quick);
+
+/// A hierarchical solve's value at the points (radiosityAt) against the reference: mean and worst
+/// relative difference over points and bands, and where the worst is.
+struct PointError {
+    double mean = 0, worst = 0;
+    std::string worstWhere;
+};
+PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown& box, const PointReference& reference);
+/// Per point, the worst relative difference over the bands.
+std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
+                                const PointReference& reference);
 
 /// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
 /// worst relative difference over the leaves.

@@ -13,8 +13,8 @@ Subcommand addBenchCommand(CLI::App& root) {
     CLI::App* sub = root.add_subcommand("bench", "Measure loading, form factors and solvers; print tables");
     sub->add_flag("--quick", options->quick, "Fewer sizes and repeats (a smoke run, not figures to quote)");
     auto only = std::make_shared<std::string>();
-    sub->add_option("--only", *only, "Run one part: scenes, form-factors, solvers (with the hierarchical tables), peers (the hierarchical solver against RenderPark and SPLASH-2 alone), hemicube, frames or accuracy (each method against the path-traced reference)")
-        ->check(CLI::IsMember({"scenes", "form-factors", "solvers", "peers", "hemicube", "frames", "accuracy"}));
+    sub->add_option("--only", *only, "Run one part: scenes, form-factors, solvers (with the hierarchical tables), peers (the hierarchical solver against RenderPark and SPLASH-2 alone), hierarchical-accuracy (at points, by link tolerance), hemicube, frames or accuracy (each method against the path-traced reference)")
+        ->check(CLI::IsMember({"scenes", "form-factors", "solvers", "peers", "hierarchical-accuracy", "hemicube", "frames", "accuracy"}));
     return {sub, [options, only] {
                 const auto wanted = [&](const char* table) { return only->empty() || *only == table; };
                 std::printf("# radiant bench%s\n", options->quick ? " --quick" : "");
@@ -24,6 +24,7 @@ Subcommand addBenchCommand(CLI::App& root) {
                 if (wanted("solvers")) benchSolvers(*options).print();
                 if (wanted("solvers")) benchHierarchical(*options).print();
                 if (wanted("solvers") || wanted("peers")) benchHierarchicalPeers(*options).print();
+                if (wanted("solvers") || wanted("hierarchical-accuracy")) benchHierarchicalAccuracy(*options).print();
                 if (wanted("accuracy")) benchAccuracy(*options).print();
                 if (wanted("hemicube")) benchHemicube(*options).print();
                 if (wanted("frames")) benchFrames(*options).print();

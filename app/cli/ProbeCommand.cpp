@@ -32,6 +32,7 @@ struct ProbeCommandOptions {
     std::string method = "gauss-seidel";
     double maxPatchArea = MeshingOptions{}.maxPatchArea;
     double tolerance = 1e-4;
+    double linkTolerance = SolverOptions{}.linkEpsilon;
     std::size_t maxIterations = 10000;
     std::string json = "-";
 };
@@ -79,6 +80,8 @@ int runProbe(const ProbeCommandOptions& options) {
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
     if (!(options.tolerance > 0))
         throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
+    if (!(options.linkTolerance > 0))
+        throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
     const SolverMethod method = parseMethod(options.method);
 
     const Scene scene = loadSceneArgument(options.scene);
@@ -95,7 +98,9 @@ int runProbe(const ProbeCommandOptions& options) {
     std::size_t iterations = 0;
     double residual = 1;
     try {
-        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+        SolverOptions solverOptions;
+        solverOptions.linkEpsilon = options.linkTolerance;
+        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
             ++iterations;
@@ -159,6 +164,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     return {sub, [options] { return runProbe(*options); }};
 }

@@ -30,6 +30,7 @@ struct RenderOptions {
     int height = 1000;
     std::string method = "progressive";
     double maxPatchArea = 0.01;
+    double linkTolerance = SolverOptions{}.linkEpsilon;
     bool falseColour = false;
     bool logScale = false;
     bool flat = false;
@@ -82,6 +83,8 @@ int runRender(const RenderOptions& options) {
                                                          std::to_string(options.height));
     if (!(options.maxPatchArea > 0))
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
+    if (!(options.linkTolerance > 0))
+        throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
     const SolverMethod method = parseMethod(options.method);
     // The GL context first, so a missing one fails before the solve rather than after.
     const OffscreenContext context("radiant render");
@@ -93,9 +96,11 @@ int runRender(const RenderOptions& options) {
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
+    SolverOptions solverOptions;
+    solverOptions.linkEpsilon = options.linkTolerance;
     std::unique_ptr<Solver> solver;
     try {
-        solver = makeSolver(method, scene, mesh);
+        solver = makeSolver(method, scene, mesh, solverOptions);
     } catch (const BudgetError& e) {
         if (!e.where().file.empty()) throw;
         throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
@@ -146,6 +151,7 @@ Subcommand addRenderCommand(CLI::App& root) {
                     methodNameList())
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
+    sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_flag("--false-colour,--false-color", options->falseColour,
                   "total radiosity in W/m^2 through viridis instead of the tone-mapped picture");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");

@@ -27,6 +27,7 @@ struct SolveOptions {
     std::string method = "gauss-seidel";
     double maxPatchArea = MeshingOptions{}.maxPatchArea;
     double tolerance = 1e-3;
+    double linkTolerance = SolverOptions{}.linkEpsilon;
     std::size_t maxIterations = 100000;
     std::string json;
     std::string csv;
@@ -85,6 +86,7 @@ void checkPositive(double value, const char* option) {
 int runSolve(const SolveOptions& options) {
     checkPositive(options.maxPatchArea, "--max-patch-area");
     checkPositive(options.tolerance, "--tolerance");
+    checkPositive(options.linkTolerance, "--link-tolerance");
     const SolverMethod method = parseMethod(options.method);
 
     const auto meshStart = std::chrono::steady_clock::now();
@@ -99,8 +101,10 @@ int runSolve(const SolveOptions& options) {
     std::unique_ptr<Solver> solver;
     {
         const ProgressLine bar(progress, "form factors");
+        SolverOptions solverOptions;
+        solverOptions.linkEpsilon = options.linkTolerance;
         try {
-            solver = makeSolver(method, scene, mesh, SolverOptions{}, &progress);
+            solver = makeSolver(method, scene, mesh, solverOptions, &progress);
         } catch (const BudgetError& e) {
             if (!e.where().file.empty()) throw;
             throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
@@ -181,6 +185,7 @@ Subcommand addSolveCommand(CLI::App& root) {
     sub->add_option("--tolerance", options->tolerance, "Stop at this residual (fraction of emitted power)")
         ->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "Stop after this many steps")->capture_default_str();
+    sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
     return {sub, [options] { return runSolve(*options); }};

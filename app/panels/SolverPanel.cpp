@@ -72,6 +72,19 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Run stops when the method's convergence measure (the row below the iteration) falls "
                           "below this");
+
+    if (!links(snapshot.method)) return;
+    if (!editingLinkTolerance_) linkToleranceExponent_ = static_cast<float>(std::log10(snapshot.linkTolerance));
+    ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Links").x - ImGui::GetStyle().ItemInnerSpacing.x);
+    std::snprintf(shown, sizeof shown, "%.0e", std::pow(10.0, static_cast<double>(linkToleranceExponent_)));
+    ImGui::SliderFloat("Links", &linkToleranceExponent_, -7.0f, -2.0f, shown);
+    editingLinkTolerance_ = ImGui::IsItemActive();
+    if (ImGui::IsItemDeactivatedAfterEdit())
+        live_.send(command::SetLinkTolerance{std::pow(10.0, static_cast<double>(linkToleranceExponent_))});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Link tolerance: a link is refined while the radiosity error it may leave exceeds this\n"
+                          "fraction of the emitted power. Smaller is more accurate and slower; changing it\n"
+                          "rebuilds the links.");
 }
 
 void SolverPanel::drawStats(const Snapshot& snapshot) {

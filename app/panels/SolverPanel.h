@@ -1,6 +1,7 @@
 #pragma once
-// Solver: the method, Run/Pause, Step, Step N, Reset and the tolerance; the last step's numbers
-// (iteration, residual, unshot power, links, time) and their history plotted against iteration.
+// Solver: the method, Run/Pause, Step, Step N, Reset, the tolerance and (hierarchical) the link
+// tolerance; the last step's numbers (iteration, residual, unshot power, links, time) and their
+// history plotted against iteration.
 #include <vector>
 
 #include "app/panels/Panel.h"
@@ -24,6 +25,8 @@ private:
     int stepCount_ = 10;
     float toleranceExponent_ = -4.0f;  ///< log10 of the tolerance, as the slider shows it
     bool editingTolerance_ = false;
+    float linkToleranceExponent_ = -4.0f;  ///< log10 of the hierarchical link tolerance
+    bool editingLinkTolerance_ = false;
     std::vector<float> plotValues_;    ///< scratch for PlotLines
 };
 

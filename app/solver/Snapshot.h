@@ -36,6 +36,7 @@ struct Snapshot {
     SolveHistory history;                   ///< every step since the last reset, for the plots
     bool running = false;                   ///< stepping by itself until converged or paused
     double tolerance = 1e-4;                ///< running stops when the residual falls below this
+    double linkTolerance = SolverOptions{}.linkEpsilon;  ///< hierarchical/importance refinement (SolverOptions)
     std::string error;                      ///< the last command's failure, empty when it succeeded
     /// Solvers built (each one a form-factor computation or initial linking) since the thread
     /// started: a materials edit must leave it unchanged.

@@ -32,6 +32,10 @@ struct SetMaterial {
 struct SetTolerance {
     double tolerance;
 };
+/// Hierarchical and importance: SolverOptions::linkEpsilon; rebuilds the links.
+struct SetLinkTolerance {
+    double linkTolerance;
+};
 struct Remesh {
     MeshingOptions meshing;
 };
@@ -58,5 +62,5 @@ struct LoadScene {
 namespace radiant::app {
 using SolverCommand = std::variant<command::Run, command::Pause, command::Step, command::Reset, command::SetMethod,
                                    command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene,
-                                   command::FocusPoint>;
+                                   command::FocusPoint, command::SetLinkTolerance>;
 }

@@ -133,7 +133,8 @@ SolverThread::~SolverThread() {
 
 bool SolverThread::cancelsLongWork(const SolverCommand& command, SolverActivity activity) {
     // A new method makes form factors pointless but not the mesh; a new mesh or scene makes both.
-    if (std::holds_alternative<command::SetMethod>(command)) return activity == SolverActivity::FormFactors;
+    if (std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::SetLinkTolerance>(command))
+        return activity == SolverActivity::FormFactors;
     if (std::holds_alternative<command::Remesh>(command) || std::holds_alternative<command::LoadScene>(command))
         return activity == SolverActivity::Meshing || activity == SolverActivity::FormFactors;
     return false;
@@ -262,6 +263,15 @@ void SolverThread::apply(State& state, SolverCommand& command) {
             } else if constexpr (std::is_same_v<C, command::SetTolerance>) {
                 if (!(c.tolerance > 0)) throw RadiantError({"", "tolerance"}, "must be positive, got " + std::to_string(c.tolerance));
                 state.tolerance = c.tolerance;
+            } else if constexpr (std::is_same_v<C, command::SetLinkTolerance>) {
+                if (!(c.linkTolerance > 0))
+                    throw RadiantError({"", "link tolerance"}, "must be positive, got " + std::to_string(c.linkTolerance));
+                options_.linkEpsilon = c.linkTolerance;
+                if (state.method == SolverMethod::Hierarchical || state.method == SolverMethod::Importance) {
+                    state.solver.reset();  // the links were refined to the old tolerance
+                    state.history.clear();
+                    ensureSolver(state);
+                }
             } else if constexpr (std::is_same_v<C, command::SetMethod>) {
                 if (c.method != state.method || !state.solver) {
                     state.method = c.method;
@@ -395,6 +405,7 @@ void SolverThread::publish(State& state) {
     s->history = state.history.snapshot();
     s->running = state.running || state.pendingSteps > 0;
     s->tolerance = state.tolerance;
+    s->linkTolerance = options_.linkEpsilon;
     s->error = state.error;
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;

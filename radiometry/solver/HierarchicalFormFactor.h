@@ -5,6 +5,7 @@
 // (for P counter-clockwise seen from its front), after clipping P to the half-space above x's
 // tangent plane (Sutherland-Hodgman), as in radiometry/formfactor but specialised to the 3- and
 // 4-corner polygons of the element tree.
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -61,25 +62,49 @@ inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n,
     return std::max(0.0, sum / (2 * std::numbers::pi));
 }
 
-/// Squared distance over source area beyond which farFieldFormFactor stands in for the exact kernel:
-/// there the source subtends under 1% of pi sr's worth (A / (pi r^2) < 0.01).
+/// Squared distance over source area beyond which farFieldFormFactor stands in for the exact kernel.
+/// There the source is small enough that a 2 x 2 Gauss rule of the point-to-point kernel over it is
+/// within 0.2% of Lambert's exact integral for oblique pairs (tests/unit/test_hierarchical_scaling.cpp;
+/// the one-point disk estimate A cos cos / (pi r^2 + A) it replaces was 1.5-2.7% low there).
 inline constexpr double kFarFieldDistanceSquaredOverArea = 32;
 
-/// F from a differential area at x (unit normal n) to a source small against its distance, by the
-/// disk approximation A cos(theta_x) cos(theta_q) / (pi r^2 + A) (J. Wallace, K. Elmquist,
-/// E. Haines, "A ray tracing algorithm for progressive radiosity", SIGGRAPH 1989), exact for a
-/// coaxial disk and within a fraction of a percent of the exact kernel when r^2 > 32 A and the
-/// source lies wholly above x's tangent plane. Returns a negative value when some corner of the
-/// source is below that plane: the caller must then clip, i.e. use pointToElementFormFactor.
+/// F from a differential area at x (unit normal n) to a source small against its distance: the
+/// point-to-point kernel cos(theta_x) cos(theta_q) / (pi r^2) integrated over the source by a 2 x 2
+/// Gauss-Legendre rule on a quad (bilinear map, its Jacobian at each node) or the degree-2 Strang-Fix
+/// rule on a triangle. The kernel is smooth where no corner of the source lies below x's tangent
+/// plane, so the rule's error falls like (A / r^2)^2 instead of the one-point rule's A / r^2.
+/// Returns a negative value when some corner of the source is below that plane: the caller must then
+/// clip, i.e. use pointToElementFormFactor.
 inline double farFieldFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source) {
     for (int i = 0; i < source.count; ++i)
         if (glm::dot(n, source.vertices[static_cast<std::size_t>(i)] - x) <= 0) return -1;
-    const glm::dvec3 d = source.centroid - x;
-    const double r2 = glm::dot(d, d);
-    const double cosReceiver = glm::dot(n, d);          // times r
-    const double cosSource = -glm::dot(source.normal, d);  // times r
-    if (cosSource <= 0) return 0;
-    return source.area * cosReceiver * cosSource / (r2 * (std::numbers::pi * r2 + source.area));
+    if (glm::dot(source.normal, x - source.centroid) <= 0) return 0;  // behind the emitting side
+    const auto kernel = [&](const glm::dvec3& y) {
+        const glm::dvec3 d = y - x;
+        const double r2 = glm::dot(d, d);
+        return std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
+    };
+    const auto& v = source.vertices;
+    double sum = 0;
+    if (source.count == 4) {
+        static constexpr std::array<double, 2> node{0.21132486540518713, 0.78867513459481287};
+        double weights = 0;
+        for (const double u : node)
+            for (const double w : node) {
+                const glm::dvec3 y = (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
+                const glm::dvec3 du = (1 - w) * (v[1] - v[0]) + w * (v[2] - v[3]);
+                const glm::dvec3 dw = (1 - u) * (v[3] - v[0]) + u * (v[2] - v[1]);
+                const double jacobian = glm::length(glm::cross(du, dw));
+                sum += jacobian * kernel(y);
+                weights += jacobian;
+            }
+        return weights > 0 ? source.area * sum / (weights * std::numbers::pi) : 0;
+    }
+    for (int i = 0; i < 3; ++i) {
+        const auto a = static_cast<std::size_t>(i);
+        sum += kernel((4.0 * v[a] + v[(a + 1) % 3] + v[(a + 2) % 3]) / 6.0);
+    }
+    return source.area * sum / (3 * std::numbers::pi);
 }
 
 /// The exact kernel, or the far-field estimate where it is safe (`far`: the pair is far apart for the
@@ -137,6 +162,105 @@ inline double gaussMeanKernel(const PatchPolygon& receiver, const PatchPolygon& 
     return weights > 0 ? sum / weights : 0;
 }
 
+/// Calls visit(x, w) for the n x n Gauss-Legendre points of the polygon (n = 2 or 3; bilinear map on
+/// a quad, the collapsed Duffy map on a triangle), w the area weights, which sum to 1.
+template <class Visit>
+void forGaussPoints(const PatchPolygon& polygon, int n, Visit&& visit) {
+    static constexpr std::array<double, 2> node2{0.21132486540518713, 0.78867513459481287};
+    static constexpr std::array<double, 2> weight2{0.5, 0.5};
+    static constexpr std::array<double, 3> node3{0.1127016653792583, 0.5, 0.8872983346207417};
+    static constexpr std::array<double, 3> weight3{5.0 / 18, 8.0 / 18, 5.0 / 18};
+    const double* node = n == 3 ? node3.data() : node2.data();
+    const double* weight = n == 3 ? weight3.data() : weight2.data();
+    const int count = n == 3 ? 3 : 2;
+    const auto& v = polygon.vertices;
+    std::array<glm::dvec3, 9> points;
+    std::array<double, 9> weights{};
+    double total = 0;
+    for (int i = 0; i < count; ++i)
+        for (int k = 0; k < count; ++k) {
+            const double u = node[i], w = node[k];
+            glm::dvec3 x, du, dw;
+            if (polygon.count == 4) {
+                x = (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
+                du = (1 - w) * (v[1] - v[0]) + w * (v[2] - v[3]);
+                dw = (1 - u) * (v[3] - v[0]) + u * (v[2] - v[1]);
+            } else {
+                x = v[0] + u * (v[1] - v[0]) + u * w * (v[2] - v[1]);
+                du = (v[1] - v[0]) + w * (v[2] - v[1]);
+                dw = u * (v[2] - v[1]);
+            }
+            const auto j = static_cast<std::size_t>(i * count + k);
+            points[j] = x;
+            weights[j] = weight[i] * weight[k] * glm::length(glm::cross(du, dw));
+            total += weights[j];
+        }
+    if (!(total > 0)) return;
+    for (std::size_t j = 0; j < static_cast<std::size_t>(count * count); ++j) visit(points[j], weights[j] / total);
+}
+
+/// The unoccluded kernel of a link receiver <- source: `mean`, F(receiver -> source); `spread`, how
+/// much the point kernel varies over the receiver (the error of pushing one value down to all of it).
+struct LinkKernel {
+    double mean = 0, spread = 0;
+};
+
+/// The exact kernel (exact over the source) at the centroids of the receiver's four children: their
+/// mean is the link's form factor, their spread (with the centroid's value: four symmetric points
+/// alone would miss a source centred over the receiver) how much the receiver's irradiance from
+/// this source varies across it. Far for the source's size, farFieldFormFactor replaces Lambert's
+/// contour integral (whose four atan2 per point were half of refinement's time). Close for their
+/// size (e.g. sharing an edge) the 4-point mean is biased and gaussMeanKernel replaces it; near
+/// contact the kernel climbs like -log of the distance to the shared edge, which interior points do
+/// not see, so the receiver's corners (a tenth of the way in) join the spread: a link whose
+/// receiver touches its source refines until the irradiance a corner leaf would miss is within the
+/// tolerance (the furnace's worst leaves were such corners, 14-27% off before).
+inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
+    const glm::dvec3 apart = p.centroid - q.centroid;
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    // The receiver's sample points lie within about sqrt(A_p) of its centroid.
+    const double nearestSample = std::max(0.0, glm::length(apart) - std::sqrt(p.area));
+    const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
+    const double atCentroid = pointToElementFormFactor(p.centroid, p.normal, q, far);
+    double sum = 0, lowest = atCentroid, highest = atCentroid;
+    for (const glm::dvec3& x : childCentroids(p)) {
+        const double f = pointToElementFormFactor(x, p.normal, q, far);
+        sum += f;
+        lowest = std::min(lowest, f);
+        highest = std::max(highest, f);
+    }
+    double mean = 0.25 * sum;
+    if (mean > 0 && glm::dot(apart, apart) < 2.25 * reach * reach) {
+        mean = gaussMeanKernel(p, q);
+        for (const glm::dvec3& corner : p.corners()) {
+            const double atCorner = pointToElementFormFactor(0.9 * corner + 0.1 * p.centroid, p.normal, q);
+            lowest = std::min(lowest, atCorner);
+            highest = std::max(highest, atCorner);
+        }
+    }
+    return {mean, highest - lowest};
+}
+
+/// F(receiver -> source) unoccluded, for a receiver small against the link it inherits: the 3 x 3
+/// Gauss rule when close, the far-field kernel at the centroid when the source is far and the
+/// receiver small against the distance too (the kernel is then nearly linear across it), else the
+/// 4-point rule of the receiver's children's centroids.
+inline double meanKernel(const PatchPolygon& p, const PatchPolygon& q) {
+    const glm::dvec3 apart = p.centroid - q.centroid;
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    const double distance2 = glm::dot(apart, apart);
+    if (distance2 < 2.25 * reach * reach) return gaussMeanKernel(p, q);
+    const double nearestSample = std::max(0.0, std::sqrt(distance2) - std::sqrt(p.area));
+    const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
+    if (far && distance2 > kFarFieldDistanceSquaredOverArea * p.area) {
+        const double f = farFieldFormFactor(p.centroid, p.normal, q);
+        if (f >= 0) return f;
+    }
+    double sum = 0;
+    for (const glm::dvec3& x : childCentroids(p)) sum += pointToElementFormFactor(x, p.normal, q, far);
+    return 0.25 * sum;
+}
+
 /// True when some of each element lies strictly in front of the other: otherwise no light passes.
 inline bool facing(const PatchPolygon& a, const PatchPolygon& b) {
     const auto someInFront = [](const PatchPolygon& of, const PatchPolygon& plane) {
@@ -166,28 +290,70 @@ inline glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
     return (1 - s) * c[0] + s * (1 - v) * c[1] + s * v * c[2];
 }
 
-/// Fraction of `rays` stratified segments between the two elements that nothing blocks. The
-/// samples are pulled slightly inside each element so that no ray starts on a shared edge.
+/// The visible share of the pair's form factor from `rays` segments between the two elements, each
+/// weighted by the point-to-point kernel (a ratio estimator; with every weight equal it is the unbiased
+/// fraction of unblocked area pairs, and for a blocker symmetric about the pair both agree in the
+/// mean, which tests/unit/test_hierarchical_accuracy.cpp checks). Each element is sampled in
+/// Latin-hypercube strata (row k, column (3k + 1) mod rays), the whole pattern shifted by a random
+/// offset modulo 1 per pair (a Cranley-Patterson rotation: P. Shirley, "Discrepancy as a quality
+/// measure for sample distributions", Eurographics 1991; R. Cranley, T. Patterson 1976), so every
+/// sample is uniform over its element, while the strata still keep the spread small. A fixed pattern
+/// without the shift is biased for blockers that are not aligned with the strata. Samples stay a hair inside each element, so no ray starts on a shared edge.
 inline double elementVisibility(const PatchPolygon& a, const PatchPolygon& b, const RayCaster& caster, int rays,
                                 std::uint64_t seed) {
     if (rays <= 0) return 1;
+    const double n = rays;
+    const std::array<double, 4> shift{unitInterval(mix(seed ^ 0xA5A5A5A5ull)), unitInterval(mix(seed ^ 0x5A5A5A5Aull)),
+                                      unitInterval(mix(seed ^ 0x3C3C3C3Cull)), unitInterval(mix(seed ^ 0xC3C3C3C3ull))};
+    constexpr double kInset = 1e-4;  // of the element's parameter range
+    const auto stratum = [&](int i, std::uint64_t bits, double offset) {
+        const double t = (i + unitInterval(bits)) / n + offset;
+        return kInset + (1 - 2 * kInset) * (t - std::floor(t));
+    };
     int unblocked = 0;
+    double seen = 0, total = 0;
     for (int k = 0; k < rays; ++k) {
         const std::uint64_t h1 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 0);
         const std::uint64_t h2 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 1);
         const std::uint64_t h3 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 2);
         const std::uint64_t h4 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 3);
-        // Latin-hypercube strata: row k, column (3k + 1) mod rays, on each element independently.
-        const double n = rays;
-        const double inset = 0.02;  // keep samples off the element's edges
-        const auto stratum = [&](int i, std::uint64_t bits) {
-            return inset + (1 - 2 * inset) * ((i + unitInterval(bits)) / n);
-        };
-        const glm::dvec3 pa = pointOn(a, stratum(k, h1), stratum((3 * k + 1) % rays, h2));
-        const glm::dvec3 pb = pointOn(b, stratum((k + 1) % rays, h3), stratum((3 * k + 2) % rays, h4));
-        if (!caster.occluded(pa, pb)) ++unblocked;
+        const glm::dvec3 pa = pointOn(a, stratum(k, h1, shift[0]), stratum((3 * k + 1) % rays, h2, shift[1]));
+        const glm::dvec3 pb = pointOn(b, stratum((k + 1) % rays, h3, shift[2]), stratum((3 * k + 2) % rays, h4, shift[3]));
+        // Each ray weighted by the point-to-point kernel: the share of the form factor, not of the
+        // area pairs (they differ where a blocker sits close to one element, at a block's foot).
+        const glm::dvec3 d = pb - pa;
+        const double r2 = glm::dot(d, d);
+        const double weight = r2 > 0 ? std::max(0.0, glm::dot(a.normal, d)) * std::max(0.0, -glm::dot(b.normal, d)) / (r2 * r2) : 0;
+        total += weight;
+        if (!caster.occluded(pa, pb)) {
+            ++unblocked;
+            seen += weight;
+        }
     }
-    return static_cast<double>(unblocked) / rays;
+    return total > 0 ? seen / total : static_cast<double>(unblocked) / rays;
+}
+
+/// The visible share of F(dx -> source) from the point x (unit normal n): k x k jittered strata
+/// over the source, each ray weighted by the point-to-point kernel so that the share times the
+/// unoccluded F estimates the occluded integral (Wallace, Elmquist, Haines 1989's gather at a point).
+inline double pointVisibility(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source,
+                              const RayCaster& caster, int raysPerSide, std::uint64_t seed) {
+    if (raysPerSide <= 0) return 1;
+    double seen = 0, total = 0;
+    const double k = raysPerSide;
+    for (int i = 0; i < raysPerSide; ++i)
+        for (int j = 0; j < raysPerSide; ++j) {
+            const std::uint64_t h = mix(seed + static_cast<std::uint64_t>(i * raysPerSide + j));
+            const double u = (i + unitInterval(h)) / k, v = (j + unitInterval(mix(h))) / k;
+            const glm::dvec3 y = pointOn(source, 1e-4 + (1 - 2e-4) * u, 1e-4 + (1 - 2e-4) * v);
+            const glm::dvec3 d = y - x;
+            const double r2 = glm::dot(d, d);
+            const double weight = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
+            if (weight <= 0) continue;
+            total += weight;
+            if (!caster.occluded(x, y)) seen += weight;
+        }
+    return total > 0 ? seen / total : 0;
 }
 
 } // namespace radiant::hierarchical

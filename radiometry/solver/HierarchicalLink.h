@@ -12,7 +12,8 @@ namespace radiant {
 struct Link {
     ElementIndex receiver = kNoElement;
     ElementIndex source = kNoElement;
-    /// F(receiver -> source) with visibility: H_receiver += formFactor * B_source.
+    /// F(receiver -> source) times the link's visible share (an unbiased ray estimate):
+    /// H_receiver += formFactor * B_source.
     float formFactor = 0;
     /// How uncertain formFactor is across the receiver (the kernel's spread over it, or the whole
     /// form factor when partially visible): what the refinement oracle multiplies by B and area.
@@ -20,10 +21,8 @@ struct Link {
     float errorFormFactor = 0;
 
     [[nodiscard]] double uncertainty() const { return std::abs(static_cast<double>(errorFormFactor)); }
-    /// Some but not all of the visibility rays were blocked.
+    /// Some but not all of the oracle's visibility rays were blocked.
     [[nodiscard]] bool partiallyVisible() const { return std::signbit(errorFormFactor); }
-    /// Every visibility ray arrived (a hidden link carries no form factor, a partial one is signed).
-    [[nodiscard]] bool fullyVisible() const { return formFactor > 0 && !partiallyVisible(); }
 };
 static_assert(sizeof(Link) == 16);
 

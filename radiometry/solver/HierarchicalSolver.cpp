@@ -45,7 +45,12 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     if (visibilityRays_ > 0) caster_ = std::make_unique<RayCaster>(scene);
 
     patches_.reserve(mesh.patches.size());
-    for (const Patch& patch : mesh.patches) patches_.push_back({patch.surface, patch.face, patch.centroid, patch.area});
+    for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
+        const Patch& patch = mesh.patches[i];
+        // A mesh made by hand may give a patch no corners: it then shows the element under its centroid.
+        patches_.push_back({patch.surface, patch.face, patch.centroid, patch.area,
+                            patch.cornerCount >= 3 ? mesh.polygon(i) : PatchPolygon{}});
+    }
     for (const PatchSample& patch : patches_)
         if (patch.surface >= scene.surfaces.size() || patch.face >= scene.surfaces[patch.surface].faces.size())
             throw RadiantError({scene.name, "patch mesh"}, "a patch names surface " + std::to_string(patch.surface) +
@@ -58,7 +63,7 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     if (refinement.maxLeafArea > 0) splitLeavesLargerThan(refinement.maxLeafArea);
     linkRoots(progress);  // sorted afterwards: the order does not depend on scheduling
     setLeavesToEmission();
-    mapSolution();
+    mapSolution(false);
 }
 
 HierarchicalSolver::~HierarchicalSolver() = default;
@@ -85,44 +90,24 @@ void HierarchicalSolver::linkRoots(Progress* progress) {
             if (progress) progress->done.fetch_add(1, std::memory_order_relaxed);
         }
     });
-    for (auto& buffer : linksPerThread_) links_.insert(links_.end(), buffer.begin(), buffer.end());
+    std::vector<NewLink> made;
+    for (auto& buffer : linksPerThread_) made.insert(made.end(), buffer.begin(), buffer.end());
     for (const std::size_t rays : raysPerThread_) rays_ += rays;
     // The same order whatever the thread timing: results do not depend on scheduling.
-    std::sort(links_.begin(), links_.end(), [](const Link& a, const Link& b) {
-        return a.receiver != b.receiver ? a.receiver < b.receiver : a.source < b.source;
+    std::sort(made.begin(), made.end(), [](const NewLink& a, const NewLink& b) {
+        return a.link.receiver != b.link.receiver ? a.link.receiver < b.link.receiver : a.link.source < b.link.source;
     });
+    for (const NewLink& m : made) {
+        links_.push_back(m.link);
+        linkShare_.push_back(m.share);
+    }
 }
 
-std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out,
-                                  bool parentVisible) const {
+std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex source, std::vector<NewLink>& out) const {
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
     if (!hierarchical::facing(p, q)) return 0;
-    // The exact kernel (exact over the source) at the centroids of the receiver's four children: their
-    // mean is the link's form factor, their spread how much the receiver's irradiance from this source
-    // varies across it, which is the error of pushing one value down to all of it.
-    // The centroid joins the spread (not the mean): four symmetric points alone would miss a
-    // source centred over the receiver.
-    // Far for the source's size, the disk approximation replaces Lambert's contour integral (whose
-    // four atan2 per point were half of refinement's time).
-    const glm::dvec3 apart = p.centroid - q.centroid;
-    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
-    // The receiver's sample points lie within about sqrt(A_p) of its centroid.
-    const double nearestSample = std::max(0.0, glm::length(apart) - std::sqrt(p.area));
-    const bool far = nearestSample * nearestSample > hierarchical::kFarFieldDistanceSquaredOverArea * q.area;
-    const double atCentroid = hierarchical::pointToElementFormFactor(p.centroid, p.normal, q, far);
-    double sum = 0, lowest = atCentroid, highest = atCentroid;
-    for (const glm::dvec3& x : hierarchical::childCentroids(p)) {
-        const double f = hierarchical::pointToElementFormFactor(x, p.normal, q, far);
-        sum += f;
-        lowest = std::min(lowest, f);
-        highest = std::max(highest, f);
-    }
-    double f = 0.25 * sum;
-    const double spread = highest - lowest;
-    // Close for their size (e.g. sharing an edge): the 4-point rule is biased there; refine it.
-    if (f > 0 && glm::dot(apart, apart) < 2.25 * reach * reach)
-        f = hierarchical::gaussMeanKernel(p, q);
+    const auto [f, spread] = hierarchical::linkKernel(p, q);
     if (f <= 0) {
         // No sample point is in front of the source, yet part of the receiver is: the link carries
         // nothing yet, and refinement finds the part that does see the source.
@@ -130,35 +115,30 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
         for (const glm::dvec3& corner : p.corners())
             bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
                                                                            p.normal, q));
-        if (bound > 0) out.push_back({receiver, source, 0.0f, static_cast<float>(bound)});
+        if (bound > 0) out.push_back({{receiver, source, 0.0f, static_cast<float>(bound)}, 0.0f});
         return 0;
     }
-    // Inherited visibility (after Hanrahan et al. 1991, Section 5): the pair lies inside its parents'
-    // pair, which every ray crossed, so one ray checks it and the full test runs only when that ray is
-    // blocked. Taking the parent's word without a ray lit the floor under the Cornell box's blocks
-    // (a coarse floor element whose four rays all missed the block's footprint); a blocked ray catches
-    // every hidden pair and a partly hidden one as often as it is hidden. Rays were a third of
-    // refinement's time.
+    // Every link casts its own rays, refined or not, in two independent sets: one tells the oracle
+    // whether the link is fully visible, hidden or partial (and so whether it refines), the other gives
+    // its visible share. Promoting a link refined from a fully visible parent to fully visible on one
+    // ray, as an earlier version did after Hanrahan et al.'s Section 5, estimated v (2 - v) for a true
+    // fraction v; taking the share from the rays that also decided to stop refining is biased too (a
+    // link stops on "all hidden" more readily than on "all visible": a half-blocked receiver came out
+    // 2% dark). With independent sets the share is unbiased whatever the oracle decided.
     std::size_t rays = 0;
-    double visible = 1;
+    double visible = 1, share = 1;
     if (caster_) {
         const std::uint64_t seed = pairSeed(options_.seed, receiver, source);
-        bool confirmed = false;
-        if (parentVisible) {
-            rays = 1;
-            confirmed = hierarchical::elementVisibility(p, q, *caster_, 1, seed) == 1;
-        }
-        if (!confirmed) {
-            visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed);
-            rays += static_cast<std::size_t>(visibilityRays_);
-        }
+        visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed);
+        share = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, hierarchical::mix(seed ^ 0x5bd1e995ull));
+        rays = 2 * static_cast<std::size_t>(visibilityRays_);
     }
     // Partly visible: the visible share may vary across the receiver by the whole form factor.
     // Fully hidden: only a gap the rays missed could carry light.
     const bool partial = visible > 0 && visible < 1;
     const double uncertainty = partial ? std::max(f, spread) : visible <= 0 ? kHiddenErrorWeight * spread : spread;
-    out.push_back({receiver, source, static_cast<float>(f * visible),
-                   static_cast<float>(partial ? -uncertainty : uncertainty)});
+    out.push_back({{receiver, source, static_cast<float>(f * share), static_cast<float>(partial ? -uncertainty : uncertainty)},
+                   static_cast<float>(share)});
     return rays;
 }
 
@@ -237,35 +217,47 @@ std::size_t HierarchicalSolver::refine() {
 
         // 3. Replace each split link by its four children (in parallel: form factors and rays). Each
         //    split owns four slots, so the links land in the same order whatever the scheduling.
-        produced_.assign(ElementTree::kChildCount * splits.size(), Link{});
+        produced_.assign(ElementTree::kChildCount * splits.size(), NewLink{});
         parallelChunks(splits.size(), threads_, 64, [&](std::size_t from, std::size_t to, unsigned thread) {
-            std::vector<Link>& scratch = linksPerThread_[thread];
+            std::vector<NewLink>& scratch = linksPerThread_[thread];
             for (std::size_t i = from; i < to; ++i) {
                 scratch.clear();
                 const Link& link = links_[splits[i].link];
-                const bool visible = link.fullyVisible();
                 if (splits[i].splitReceiver) {
                     const ElementIndex first = tree_.firstChild(link.receiver);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        raysPerThread_[thread] += makeLink(c, link.source, scratch, visible);
+                        raysPerThread_[thread] += makeLink(c, link.source, scratch);
                 } else {
                     const ElementIndex first = tree_.firstChild(link.source);
                     for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c)
-                        raysPerThread_[thread] += makeLink(link.receiver, c, scratch, visible);
+                        raysPerThread_[thread] += makeLink(link.receiver, c, scratch);
                 }
                 std::copy(scratch.begin(), scratch.end(), produced_.begin() + ElementTree::kChildCount * i);
             }
         });
         for (const Split& split : splits) links_[split.link].receiver = kNoElement;
         begin = links_.size();
-        for (const Link& link : produced_)
-            if (link.receiver != kNoElement) {
-                links_.push_back(link);
+        for (const NewLink& made : produced_)
+            if (made.link.receiver != kNoElement) {
+                links_.push_back(made.link);
+                linkShare_.push_back(made.share);
                 ++created;
             }
     }
-    if (anySplit) std::erase_if(links_, [](const Link& link) { return link.receiver == kNoElement; });
+    if (anySplit) {
+        std::size_t kept = 0;
+        for (std::size_t i = 0; i < links_.size(); ++i)
+            if (links_[i].receiver != kNoElement) {
+                links_[kept] = links_[i];
+                linkShare_[kept++] = linkShare_[i];
+            }
+        links_.resize(kept);
+        linkShare_.resize(kept);
+        patchRowsCurrent_ = false;
+        leafRowsCurrent_ = false;
+    }
     for (const std::size_t rays : raysPerThread_) rays_ += rays;
+    if (anySplit || receiverLinkBegin_.size() != tree_.size() + 1) indexLinksByReceiver();
     return created;
 }
 
@@ -302,7 +294,8 @@ double HierarchicalSolver::pushPull() {
         pushedIrradiance_[e] = gathered[e] + (parent == kNoElement ? Rgb(0.0) : pushedIrradiance_[parent]);
         if (!tree_.isLeaf(e)) continue;
         const std::uint32_t s = tree_.surface(e);
-        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * pushedIrradiance_[e];
+        const Rgb& irradiance = leafRowsCurrent_ ? leafIrradiance_[e] : pushedIrradiance_[e];
+        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
         change += tree_.area(e) * glm::abs(updated - radiosity[e]);
         emitted += tree_.area(e) * surfaceExitance_[s];
         radiosity[e] = updated;
@@ -327,7 +320,7 @@ void HierarchicalSolver::setLeavesToEmission() {
     std::fill(tree_.gatheredIrradiance().begin(), tree_.gatheredIrradiance().end(), Rgb(0.0));
 }
 
-void HierarchicalSolver::mapSolution() {
+void HierarchicalSolver::mapSolution(bool gathered) {
     if (mappedTreeSize_ != tree_.size() || patchElement_.size() != patches_.size()) {
         patchElement_.resize(patches_.size());
         for (std::size_t i = 0; i < patches_.size(); ++i) {
@@ -339,7 +332,10 @@ void HierarchicalSolver::mapSolution() {
     }
     solution_.resize(patches_.size());
     const auto& radiosity = tree_.radiosity();
-    for (std::size_t i = 0; i < patches_.size(); ++i) solution_[i] = radiosity[patchElement_[i]];
+    if (gathered && !patchRowsCurrent_) buildPatchRows();
+    gathered = gathered && patchRowsCurrent_;
+    for (std::size_t i = 0; i < patches_.size(); ++i)
+        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i) : radiosity[patchElement_[i]];
     afterSolutionMapped();
 }
 
@@ -348,10 +344,15 @@ IterationStats HierarchicalSolver::step() {
     IterationStats stats;
     stats.iteration = stats_.iteration + 1;
     stats.linksRefined = refine();
+    // The rows cost a form factor per leaf and per link of its chain: they are built once refinement
+    // has settled (a step that made no links), and until then push-pull pushes constants.
+    const bool settled = stats.linksRefined == 0;
+    if (settled && !leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) buildLeafRows();
+    if (leafRowsCurrent_) gatherLeafRows();
     gather();
     stats.residual = pushPull();
     afterGather();
-    mapSolution();
+    mapSolution(settled);
     stats.links = links_.size();
     stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats_ = stats;
@@ -377,18 +378,21 @@ void HierarchicalSolver::setMaterial(std::size_t surface, const Rgb& reflectance
 void HierarchicalSolver::reset() {
     setLeavesToEmission();
     stats_ = {};
-    mapSolution();
+    mapSolution(false);
 }
 
 std::size_t HierarchicalSolver::bytes() const {
     std::size_t perThread = 0;
     for (const auto& b : splitsPerThread_) perThread += b.capacity() * sizeof(Split);
-    for (const auto& b : linksPerThread_) perThread += b.capacity() * sizeof(Link);
-    perThread += produced_.capacity() * sizeof(Link);
+    for (const auto& b : linksPerThread_) perThread += b.capacity() * sizeof(NewLink);
+    perThread += produced_.capacity() * sizeof(NewLink);
     for (const auto& b : gatherPerThread_) perThread += b.capacity() * sizeof(Rgb);
-    return tree_.bytes() + links_.capacity() * sizeof(Link) + pushedIrradiance_.capacity() * sizeof(Rgb) +
+    return tree_.bytes() + links_.capacity() * sizeof(Link) + linkShare_.capacity() * sizeof(float) + pushedIrradiance_.capacity() * sizeof(Rgb) +
            importance_.capacity() * sizeof(double) + patchElement_.capacity() * sizeof(ElementIndex) +
-           patches_.capacity() * sizeof(PatchSample) + solution_.capacity() * sizeof(Rgb) + perThread;
+           patches_.capacity() * sizeof(PatchSample) + solution_.capacity() * sizeof(Rgb) + perThread +
+           (receiverLinkBegin_.capacity() + receiverLinks_.capacity()) * sizeof(std::uint32_t) +
+           patchRowBegin_.capacity() * sizeof(std::size_t) +
+           patchRows_.capacity() * sizeof(GatherTerm);
 }
 
 std::size_t HierarchicalSolver::raysCast() const {

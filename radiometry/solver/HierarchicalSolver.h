@@ -6,15 +6,16 @@
 // refined (its larger element split, the link replaced by four finer ones) while its "BF" error
 // estimate rho_p B_q dF_pq A_p exceeds linkEpsilon times the emitted power, until elements reach
 // minElementArea. dF is the form factor's uncertainty: the spread of the exact point-to-polygon
-// kernel over the receiver (the error of giving the whole receiver one value), or the whole form
-// factor when a few rays find the link partially visible, so shadow boundaries refine further
-// than fully visible or fully hidden links. Where the source is small against its distance the
-// kernel is the disk estimate (HierarchicalFormFactor.h). A link refined from a fully visible one
-// inherits its visibility without rays (the paper's Section 5). To scale by element count, leaves
+// kernel over the receiver (the error of giving the whole receiver one value; near contact its
+// corners count too), or the whole form factor when a few rays find the link partially visible, so
+// shadow boundaries refine further than fully visible or fully hidden links. Where the source is small
+// against its distance the kernel is a 2 x 2 Gauss rule over it (HierarchicalFormFactor.h). Every
+// link casts its own visibility rays (an unbiased estimate). To scale by element count, leaves
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
 // cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
-// pulled up as the area-weighted mean of the children.
+// pulled up as the area-weighted mean of the children. What a patch and a probe point show is gathered
+// at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -58,14 +59,25 @@ public:
     /// For each mesh patch, the element whose radiosity it shows (about the patch's size or the
     /// deepest one under its centroid).
     [[nodiscard]] std::span<const ElementIndex> patchElements() const { return patchElement_; }
+    /// Radiosity at `point` on face `face` of surface `surface` (W/m^2 per band): E + rho H(x), H
+    /// gathered at x over the links of every element containing x with the exact point kernel and a
+    /// visibility of x's own (kPointVisibilityRaysPerSide^2 rays per link). What the
+    /// probe reads: the leaf's constant is off by the kernel's variation across the leaf. Zero for a
+    /// face that does not exist. Thread-safe against other const calls, not against step().
+    [[nodiscard]] Rgb radiosityAt(std::uint32_t surface, std::uint32_t face, const glm::dvec3& point) const;
+    static constexpr int kPointVisibilityRaysPerSide = 8;
+    /// Above this many leaves the leaf rows' memory (about 8 bytes per link of a leaf's chain, ~60 per
+    /// leaf) is not spent and push-pull pushes the ancestors' irradiance down as constants.
+    static constexpr std::size_t kMaxLeavesWithRows = 1u << 18;
     /// Heap bytes held by elements, links and the solver's per-element arrays.
     [[nodiscard]] std::size_t bytes() const override;
     [[nodiscard]] const HierarchicalSolver* hierarchy() const override { return this; }
     /// Visibility rays cast by refinement so far.
     [[nodiscard]] std::size_t raysCast() const;
 
-    /// Visibility rays per new link (stratified): few, because the oracle only needs to know
-    /// whether a link is fully visible, fully hidden or partial.
+    /// Visibility rays per new link and per set (stratified; two independent sets, see makeLink): few,
+    /// because the oracle only needs to know whether a link is fully visible, fully hidden or partial,
+    /// and a partial link refines until its share matters little.
     static constexpr int kLinkVisibilityRays = 4;
     /// How much a link that every ray found blocked counts in the oracle, relative to a visible one.
     static constexpr double kHiddenErrorWeight = 0.25;
@@ -101,17 +113,49 @@ private:
 
     void splitLeavesLargerThan(double area);
     void linkRoots(Progress* progress);
-    /// Appends the link receiver <- source to `out` when the two can exchange light. `parentVisible`:
-    /// the link it refines was fully visible, so one unblocked ray confirms this one. Returns the
+    /// Appends the link receiver <- source to `out` when the two can exchange light. Returns the
     /// number of visibility rays cast.
-    std::size_t makeLink(ElementIndex receiver, ElementIndex source, std::vector<Link>& out, bool parentVisible = false) const;
+    struct NewLink {
+        Link link;
+        float share = 0;  ///< its visible share (the link's formFactor is F times it)
+    };
+    std::size_t makeLink(ElementIndex receiver, ElementIndex source, std::vector<NewLink>& out) const;
     [[nodiscard]] double linkError(const Link& link) const;
     [[nodiscard]] bool canSplit(ElementIndex e) const;
     std::size_t refine();
     void gather();
     /// Returns the residual of the radiosity the gather started from.
     double pushPull();
-    void mapSolution();
+    /// Refreshes the per-patch solution: `gathered` (refinement has settled), each patch's mean of the
+    /// links' gather (by its patch row, kept while the links stay); otherwise (while refining, before
+    /// the first step, after reset) the elements' own values.
+    void mapSolution(bool gathered);
+    struct GatherTerm {
+        ElementIndex source;
+        float weight;  ///< F(x -> source) times its visible share, averaged over the patch's points
+    };
+    /// Links grouped by receiver (HierarchicalGather.cpp).
+    void indexLinksByReceiver();
+    /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors (`everyLink`:
+    /// also those whose rays found them hidden).
+    template <class Visibility>
+    void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
+                       std::vector<GatherTerm>& out) const;
+    /// Appends weight x F(x -> source), or the same for the source's children where it is large for its
+    /// distance from x (area over squared distance above kSourceExpansion).
+    void expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                      std::vector<GatherTerm>& out) const;
+    static constexpr double kSourceExpansion = 0.05;
+    /// Each patch's gather row, rebuilt when refinement changed the links.
+    void buildPatchRows();
+    /// Each leaf's gather row: every link of the leaf and its ancestors with the form factor from the
+    /// leaf itself (its own mean of the kernel), in place of the ancestors' means pushed down as
+    /// constants. Rebuilt when refinement changed the links.
+    void buildLeafRows();
+    /// leafIrradiance_ from the leaf rows and the current radiosity (both cores).
+    void gatherLeafRows();
+
+    [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
 
     SolverOptions options_;
@@ -120,6 +164,7 @@ private:
     std::unique_ptr<RayCaster> caster_;
     int visibilityRays_ = 0;
     std::vector<Link> links_;
+    std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
     std::vector<Rgb> surfaceReflectance_;
     std::vector<Rgb> surfaceExitance_;
 
@@ -127,16 +172,25 @@ private:
         std::uint32_t surface, face;
         glm::dvec3 centroid;
         double area;
+        PatchPolygon polygon;
     };
     std::vector<PatchSample> patches_;
     std::vector<ElementIndex> patchElement_;
     std::size_t mappedTreeSize_ = 0;
     std::vector<Rgb> solution_;
+    std::vector<std::uint32_t> receiverLinkBegin_, receiverLinks_;
+    std::vector<std::size_t> patchRowBegin_;
+    std::vector<GatherTerm> patchRows_;
+    bool patchRowsCurrent_ = false;
+    std::vector<std::size_t> leafRowBegin_;  ///< per element (rows only at leaves)
+    std::vector<GatherTerm> leafRows_;
+    std::vector<Rgb> leafIrradiance_;
+    bool leafRowsCurrent_ = false;
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
-    std::vector<std::vector<Link>> linksPerThread_;
-    std::vector<Link> produced_;
+    std::vector<std::vector<NewLink>> linksPerThread_;
+    std::vector<NewLink> produced_;
     std::vector<std::size_t> raysPerThread_;
     std::vector<std::vector<Rgb>> gatherPerThread_;
     std::vector<Rgb> pushedIrradiance_;

@@ -39,7 +39,12 @@ struct IterationStats {
 struct SolverOptions {
     FormFactorOptions formFactors{};
     double matrixThreshold = 1e-7;     ///< gathering: form factors below this are dropped (mass reported)
-    double linkEpsilon = 1e-4;         ///< hierarchical: BF refinement threshold, W/m^2 x m^2 scale-free
+    /// Hierarchical and importance: the link tolerance (`--link-tolerance`, the Solver panel's "Links"
+    /// slider), unit-free. A link is refined while the radiosity error it may leave on its receiver,
+    /// rho B dF A (W: reflectance, source radiosity, the form factor's spread over the receiver or its
+    /// unresolved visibility, receiver area), exceeds this fraction of the scene's emitted power.
+    /// Smaller is more accurate and slower: the error falls and the links grow about tenfold per 100x.
+    double linkEpsilon = 1e-4;
     double minElementArea = 1e-5;      ///< hierarchical: m^2, elements are not split below this
     std::uint64_t seed = 1;
     /// Importance: the camera whose view drives refinement (position, target, up, vertical fov in radians).

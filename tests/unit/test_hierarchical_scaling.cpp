@@ -39,18 +39,17 @@ Scaled solveFor(const Scene& scene, const PatchMesh& mesh, std::size_t elements)
 
 TEST_SUITE("hierarchical") {
 
-TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho), closer with more elements") {
-    // Most leaves, split for resolution alone, take their irradiance from their ancestors' links:
-    // in a furnace the surfaces must still show the closed form, and more elements must bring them
-    // measurably closer to it (the threshold shrinks with the leaf, see hierarchicalSetupForElements).
+TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho) on every leaf") {
+    // Most leaves, split for resolution alone, have no links of their own: their rows gather over
+    // their ancestors' links with the leaf's own form factors (buildLeafRows). In a furnace every leaf
+    // must then show the closed form, corners included; before the rows, ancestors' means pushed down
+    // as constants left corner leaves 20-25% off.
     const Scene scene = makeFurnace();
     const double rho = scene.materials[0].reflectance.x, exitance = scene.materials[0].exitance.value().x;
     const double expected = exitance / (1 - rho);
     MeshingOptions meshing;
     meshing.maxPatchArea = 0.1;
     const PatchMesh mesh = meshScene(scene, meshing);
-    // From 8k elements up (the bench's sizes start at 10k); at 2k the worst patch is 4.4% off.
-    std::vector<double> rmsLeaf, worstLeaf;
     for (const std::size_t elements : {std::size_t{8000}, std::size_t{32000}}) {
         CAPTURE(elements);
         const HierarchicalSetup setup = hierarchicalSetupForElements(scene, elements);
@@ -66,24 +65,18 @@ TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho), closer with mo
             squares += tree.area(e) * off * off;
             worst = std::max(worst, std::abs(off));
         }
-        rmsLeaf.push_back(std::sqrt(squares / scene.totalArea()));
-        worstLeaf.push_back(worst);
-        CHECK(sum / scene.totalArea() == doctest::Approx(expected).epsilon(0.005).scale(0));
-        // Per patch (0.1 m^2, what the window shows), as in test_hierarchical.cpp: form-factor errors
-        // amplified by rho / (1 - rho), worst at the box's concave edges.
+        const double rmsLeaf = std::sqrt(squares / scene.totalArea());
+        CHECK(sum / scene.totalArea() == doctest::Approx(expected).scale(0).epsilon(0.001));
+        CHECK(rmsLeaf < 0.005);
+        CHECK(worst < 0.02);
+        // Per patch (0.1 m^2, what the window shows).
         double worstPatch = 0;
         for (const Rgb& b : solver.solution()) worstPatch = std::max(worstPatch, std::abs(b.x / expected - 1));
-        CHECK(worstPatch < 0.02 * rho / (1 - rho));
-        // Single leaves in the box's corners are far worse (about 25% at 8k, 20% at 32k): there each
-        // of ~100 links pushed down from an ancestor leaves a small error of the same sign.
+        CHECK(worstPatch < 0.02);
         MESSAGE(tree.leafCount() << " leaves: mean off by " << sum / scene.totalArea() / expected - 1
-                                 << ", worst patch by " << worstPatch << ", leaves rms " << rmsLeaf.back()
+                                 << ", worst patch by " << worstPatch << ", leaves rms " << rmsLeaf
                                  << ", worst leaf " << worst);
     }
-    // 4x the elements: measured rms 4.6% -> 3.1%, worst leaf 25% -> 20%. The earlier rule (threshold
-    // proportional to the leaf area: a fixed radiosity tolerance) gave 4.4% -> 3.6% and 24% -> 27%.
-    CHECK(rmsLeaf[1] < 0.75 * rmsLeaf[0]);
-    CHECK(worstLeaf[1] < 0.9 * worstLeaf[0]);
 }
 
 TEST_CASE("hierarchical scaling: the floor under the Cornell blocks stays dark") {
@@ -157,35 +150,43 @@ TEST_CASE("hierarchical scaling: 4x the elements, links per leaf at most 4^(1/3)
 
 TEST_SUITE("hierarchical") {
 
-TEST_CASE("hierarchical far field: the disk estimate is the exact kernel where refinement uses it") {
-    // A 0.1 m square source, centre c, seen from points at distance r with r^2 = 32 A and beyond,
-    // tilted; the reference is Lambert's exact contour integral (clipped at the horizon).
-    const double side = 0.1, area = side * side;
-    const std::vector<glm::dvec3> corners = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
-    const PatchPolygon source = makeElementPolygon(corners);
-    REQUIRE(source.normal.z == doctest::Approx(1.0).scale(0));
-    for (const double r2OverA : {32.0, 100.0, 1000.0})
-        for (const double tilt : {0.0, 0.4, 1.0})
-            for (const double offAxis : {0.0, 0.5, 1.0}) {
-                CAPTURE(r2OverA);
-                CAPTURE(tilt);
-                CAPTURE(offAxis);
-                const double r = std::sqrt(r2OverA * area);
-                const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
-                const glm::dvec3 x = source.centroid + r * direction;
-                // The receiver faces the source, turned by `tilt` (up to 57 degrees) about a side axis.
-                const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
-                const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
-                const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
-                const double estimate = hierarchical::farFieldFormFactor(x, normal, source);
-                REQUIRE(exact > 0);
-                REQUIRE(estimate >= 0);
-                CHECK(estimate == doctest::Approx(exact).epsilon(0.01).scale(0));
-                // No point sees more than a differential source facing it squarely would give.
-                CHECK(exact <= area / (std::numbers::pi * r * r) * 1.01);
-            }
+TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where refinement uses it") {
+    // A 0.1 m square (and a triangle) source seen from points at distance r with r^2 = 32 A (the
+    // threshold) and beyond, from oblique directions, the receiver tilted; the reference is Lambert's
+    // exact contour integral (clipped at the horizon). The one-point disk estimate was 1.5-2.7% low here.
+    const double side = 0.1;
+    const std::vector<glm::dvec3> square = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
+    const std::vector<glm::dvec3> triangle = {{0, 0, 0}, {side, 0, 0}, {0.3 * side, 1.2 * side, 0}};
+    int compared = 0;
+    for (const auto* corners : {&square, &triangle}) {
+        const PatchPolygon source = makeElementPolygon(*corners);
+        REQUIRE(source.normal.z == doctest::Approx(1.0));
+        for (const double r2OverA : {32.0, 50.0, 100.0, 1000.0})
+            for (const double tilt : {0.0, 0.4, 1.0, 1.3})
+                for (const double offAxis : {0.0, 0.5, 1.0, 2.0, 3.0}) {
+                    CAPTURE(r2OverA);
+                    CAPTURE(tilt);
+                    CAPTURE(offAxis);
+                    const double r = std::sqrt(r2OverA * source.area);
+                    const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
+                    const glm::dvec3 x = source.centroid + r * direction;
+                    // The receiver faces the source, turned by `tilt` (up to 75 degrees) about a side axis.
+                    const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
+                    const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
+                    const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
+                    const double estimate = hierarchical::farFieldFormFactor(x, normal, source);
+                    REQUIRE(exact > 0);
+                    if (estimate < 0) continue;  // straddles the horizon: the exact kernel is used
+                    ++compared;
+                    CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(0.002));
+                    // No point sees more than a differential source facing it squarely would give.
+                    CHECK(exact <= source.area / (std::numbers::pi * r * r) * 1.01);
+                }
+    }
+    CHECK(compared > 120);
     // A source straddling the receiver's horizon is left to the exact kernel.
     // (Above the source's centre, its tangent plane nearly vertical: half the source lies behind it.)
+    const PatchPolygon source = makeElementPolygon(square);
     const glm::dvec3 x = source.centroid + glm::dvec3(0, 0, 0.5);
     const glm::dvec3 steep = glm::normalize(glm::dvec3(1, 0, -0.02));
     CHECK(hierarchical::farFieldFormFactor(x, steep, source) < 0);

@@ -1,0 +1,183 @@
+// What the hierarchical solve shows between its elements: the irradiance at a point gathered over the
+// links of every element that contains it, with the exact point-to-element kernel at that point,
+// instead of the constant its leaf holds. This is the final gather of hierarchical radiosity
+// (D. Lischinski, F. Tampieri, D. Greenberg, "Combining hierarchical radiosity and discontinuity
+// meshing", SIGGRAPH 1993, Section 5; P. Hanrahan, D. Salzman, L. Aupperle 1991 push the same links'
+// irradiance down as a constant): it plays the role of RenderPark's higher-order basis on the leaf
+// (Gortler, Schroeder, Cohen, Hanrahan, "Wavelet radiosity", SIGGRAPH 1993), so the value at a point
+// follows the kernel's variation across a leaf, most of all near contact and under the light.
+#include <algorithm>
+#include <cmath>
+
+#include "radiometry/solver/HierarchicalFormFactor.h"
+#include "radiometry/solver/HierarchicalParallel.h"
+#include "radiometry/solver/HierarchicalSolver.h"
+
+namespace radiant {
+
+void HierarchicalSolver::indexLinksByReceiver() {
+    const std::size_t n = tree_.size();
+    receiverLinkBegin_.assign(n + 1, 0);
+    for (const Link& link : links_) ++receiverLinkBegin_[link.receiver + 1];
+    for (std::size_t e = 0; e < n; ++e) receiverLinkBegin_[e + 1] += receiverLinkBegin_[e];
+    receiverLinks_.resize(links_.size());
+    std::vector<std::uint32_t> next(receiverLinkBegin_.begin(), receiverLinkBegin_.end() - 1);
+    for (std::size_t i = 0; i < links_.size(); ++i) receiverLinks_[next[links_[i].receiver]++] = static_cast<std::uint32_t>(i);
+}
+
+template <class Visibility>
+void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility,
+                                       bool everyLink, std::vector<GatherTerm>& out) const {
+    const glm::dvec3& n = tree_.polygon(leaf).normal;
+    for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
+        for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+            const std::uint32_t i = receiverLinks_[k];
+            if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible()) continue;
+            const PatchPolygon& q = tree_.polygon(links_[i].source);
+            if (hierarchical::pointToElementFormFactor(x, n, q) <= 0) continue;
+            const double v = visibility(i, q);
+            if (v > 0) expandSource(links_[i].source, x, n, weight * v, out);
+        }
+}
+
+void HierarchicalSolver::expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                                      std::vector<GatherTerm>& out) const {
+    // A source large for its distance from x is read through its children: its radiosity varies
+    // across it (bright under the light, dark in a corner) where x's kernel varies too, and the
+    // product's mean is not the means' product.
+    const PatchPolygon& q = tree_.polygon(source);
+    const glm::dvec3 d = q.centroid - x;
+    if (!tree_.isLeaf(source) && q.area > kSourceExpansion * glm::dot(d, d)) {
+        const ElementIndex first = tree_.firstChild(source);
+        for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(c, x, n, weight, out);
+        return;
+    }
+    const double f = hierarchical::pointToElementFormFactor(x, n, q);
+    if (f > 0) out.push_back({source, static_cast<float>(weight * f)});
+}
+
+void HierarchicalSolver::buildPatchRows() {
+    std::vector<std::vector<GatherTerm>> rows(patches_.size());
+    parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
+        // A link's visible share, the same for every point of its receiver in the patch rows (rays per
+        // patch point would make the display noisy; the probe's point casts its own).
+        const auto shared = [&](std::uint32_t link, const PatchPolygon&) { return static_cast<double>(linkShare_[link]); };
+        for (std::size_t p = from; p < to; ++p) {
+            const PatchSample& patch = patches_[p];
+            std::vector<GatherTerm>& row = rows[p];
+            // The patch's mean irradiance by a Gauss rule: 3 x 3 where the leaves are finer than the
+            // patch (their links say the irradiance varies within it), 2 x 2 elsewhere.
+            const ElementIndex atCentroid = tree_.locate(patch.surface, patch.face, patch.centroid);
+            const int order = atCentroid != kNoElement && 4 * tree_.area(atCentroid) < patch.area ? 3 : 2;
+            const auto gatherAt = [&](const glm::dvec3& x, double weight) {
+                const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
+                if (leaf != kNoElement) gatherTermsAt(leaf, x, weight, shared, false, row);
+            };
+            if (patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
+            std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
+            std::size_t kept = 0;
+            for (const GatherTerm& term : row) {
+                if (kept > 0 && row[kept - 1].source == term.source)
+                    row[kept - 1].weight += term.weight;
+                else
+                    row[kept++] = term;
+            }
+            row.resize(kept);
+        }
+    });
+    patchRowBegin_.assign(patches_.size() + 1, 0);
+    for (std::size_t p = 0; p < rows.size(); ++p) patchRowBegin_[p + 1] = patchRowBegin_[p] + rows[p].size();
+    patchRows_.clear();
+    patchRows_.reserve(patchRowBegin_.back());
+    for (const auto& row : rows) patchRows_.insert(patchRows_.end(), row.begin(), row.end());
+    patchRowsCurrent_ = true;
+}
+
+Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
+    const auto& radiosity = tree_.radiosity();
+    Rgb irradiance(0.0);
+    for (std::size_t k = patchRowBegin_[patch]; k < patchRowBegin_[patch + 1]; ++k)
+        irradiance += static_cast<double>(patchRows_[k].weight) * radiosity[patchRows_[k].source];
+    const std::uint32_t s = patches_[patch].surface;
+    return surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
+}
+
+Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, const glm::dvec3& point) const {
+    const ElementIndex leaf = tree_.locate(surface, face, point);
+    if (leaf == kNoElement) return Rgb(0.0);
+    if (stats_.iteration == 0) return tree_.radiosity()[leaf];  // before the first step: B = E
+    const PatchPolygon& element = tree_.polygon(leaf);
+    // On the element's plane: a probe point may lie a hair off it.
+    const glm::dvec3 x = point - glm::dot(point - element.centroid, element.normal) * element.normal;
+    std::vector<GatherTerm> terms;
+    // Every link casts its own rays from x: a link's four rays may have called a penumbra fully lit
+    // or fully dark, which the point would inherit.
+    const auto rays = [&](std::uint32_t link, const PatchPolygon& q) {
+        if (caster_ == nullptr) return static_cast<double>(linkShare_[link]);
+        return hierarchical::pointVisibility(x, element.normal, q, *caster_, kPointVisibilityRaysPerSide,
+                                             hierarchical::mix(options_.seed ^ link));
+    };
+    gatherTermsAt(leaf, x, 1.0, rays, caster_ != nullptr, terms);
+    Rgb irradiance(0.0);
+    for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
+    return surfaceExitance_[surface] + surfaceReflectance_[surface] * irradiance;
+}
+
+void HierarchicalSolver::buildLeafRows() {
+    const std::size_t n = tree_.size();
+    std::vector<std::vector<GatherTerm>> rows(n);
+    parallelChunks(n, threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t i = from; i < to; ++i) {
+            const auto leaf = static_cast<ElementIndex>(i);
+            if (!tree_.isLeaf(leaf)) continue;
+            const PatchPolygon& p = tree_.polygon(leaf);
+            std::vector<GatherTerm>& row = rows[i];
+            for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
+                for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+                    const Link& link = links_[receiverLinks_[k]];
+                    if (link.formFactor <= 0) continue;
+                    // The leaf's own links already hold its mean; an ancestor's hold the ancestor's, so
+                    // the leaf takes its own form factor, from the source's children where the source
+                    // is large for its distance (as expandSource does at a point).
+                    if (e == leaf) {
+                        row.push_back({link.source, link.formFactor});
+                        continue;
+                    }
+                    const double share = linkShare_[receiverLinks_[k]];
+                    const auto add = [&](const auto& self, ElementIndex q) -> void {
+                        const PatchPolygon& polygon = tree_.polygon(q);
+                        const glm::dvec3 d = polygon.centroid - p.centroid;
+                        if (!tree_.isLeaf(q) && polygon.area > kSourceExpansion * glm::dot(d, d)) {
+                            for (ElementIndex c = tree_.firstChild(q); c < tree_.firstChild(q) + ElementTree::kChildCount; ++c)
+                                self(self, c);
+                            return;
+                        }
+                        const double f = hierarchical::meanKernel(p, polygon) * share;
+                        if (f > 0) row.push_back({q, static_cast<float>(f)});
+                    };
+                    add(add, link.source);
+                }
+        }
+    });
+    leafRowBegin_.assign(n + 1, 0);
+    for (std::size_t e = 0; e < n; ++e) leafRowBegin_[e + 1] = leafRowBegin_[e] + rows[e].size();
+    leafRows_.clear();
+    leafRows_.reserve(leafRowBegin_.back());
+    for (const auto& row : rows) leafRows_.insert(leafRows_.end(), row.begin(), row.end());
+    leafIrradiance_.assign(n, Rgb(0.0));
+    leafRowsCurrent_ = true;
+}
+
+void HierarchicalSolver::gatherLeafRows() {
+    const auto& radiosity = tree_.radiosity();
+    parallelChunks(tree_.size(), threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = from; e < to; ++e) {
+            Rgb sum(0.0);
+            for (std::size_t k = leafRowBegin_[e]; k < leafRowBegin_[e + 1]; ++k)
+                sum += static_cast<double>(leafRows_[k].weight) * radiosity[leafRows_[k].source];
+            leafIrradiance_[e] = sum;
+        }
+    });
+}
+
+} // namespace radiant

@@ -1,0 +1,171 @@
+// Hierarchical radiosity's error control against closed forms (reference/oracles.md): the visibility
+// estimate of a link is unbiased for a pair whose visible fraction is known by symmetry, the value at
+// a point (the links' gather) is the differential-area-to-rectangle form factor, and the furnace's
+// every leaf is near E / (1 - rho). Tolerances are relative (.scale(0)).
+#include <doctest/doctest.h>
+
+#include "tests/support/CatalogViewFactors.h"
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/ElementTree.h"
+#include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/HierarchicalFormFactor.h"
+#include "radiometry/solver/HierarchicalSolver.h"
+
+using namespace radiant;
+
+namespace {
+
+Face quadFace(std::initializer_list<glm::dvec3> corners) {
+    Face face;
+    face.vertices = corners;
+    face.updateGeometry();
+    return face;
+}
+
+/// Unit squares: "lower" at z = 0 facing +z, "upper" at z = 1 facing -z. With `blocker`, a black
+/// plate in the plane z = 1/2 covers x < 1/2 (and y < 1/2 too when `quadrant`): a segment between
+/// the squares crosses that plane at the mean of its ends, so it is blocked with probability 1/2
+/// (resp. 1/4) for ends uniform on the squares, and by the mirror symmetry x -> 1 - x the blocked
+/// share of the form factor is 1/2 as well (half-plane blocker).
+Scene platesWithBlocker(bool blocker, bool quadrant, double lowerExitance, double upperReflectance) {
+    Scene scene;
+    scene.name = "half-blocked plates";
+    scene.materials = {{"lamp", Rgb(0.0), ExitanceRgb(Rgb(lowerExitance))},
+                       {"receiver", Rgb(upperReflectance), ExitanceRgb{}},
+                       {"black", Rgb(0.0), ExitanceRgb{}}};
+    scene.surfaces.push_back({"lower", 0, {quadFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}, "test"});
+    scene.surfaces.push_back({"upper", 1, {quadFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})}, "test"});
+    if (blocker) {
+        const double yEnd = quadrant ? 0.5 : 2.0;
+        scene.surfaces.push_back(
+            {"blocker", 2, {quadFace({{-1, -1, 0.5}, {0.5, -1, 0.5}, {0.5, yEnd, 0.5}, {-1, yEnd, 0.5}})}, "test"});
+    }
+    return scene;
+}
+
+PatchMesh meshed(const Scene& scene, double maxPatchArea) {
+    MeshingOptions meshing;
+    meshing.maxPatchArea = maxPatchArea;
+    return meshScene(scene, meshing);
+}
+
+/// F from a differential area to a parallel a x b rectangle whose corner is on its normal, c away.
+double cornerRectangle(double a, double b, double c) {
+    const double A = a / c, B = b / c;
+    return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
+            B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
+           (2 * std::numbers::pi);
+}
+
+} // namespace
+
+TEST_SUITE("hierarchical") {
+
+TEST_CASE("hierarchical visibility: a half-blocked and a quarter-blocked pair, estimated without bias") {
+    for (const bool quadrant : {false, true}) {
+        CAPTURE(quadrant);
+        const Scene scene = platesWithBlocker(true, quadrant, 1, 0.5);
+        const RayCaster caster(scene);
+        const PatchPolygon lower = makeElementPolygon(scene.surfaces[0].faces[0].vertices);
+        const PatchPolygon upper = makeElementPolygon(scene.surfaces[1].faces[0].vertices);
+        const double expected = quadrant ? 0.75 : 0.5;
+        // Each estimate is 4 rays; their mean over many pairs' seeds converges to the true fraction
+        // only if the estimator is unbiased (a fixed stratification pattern is not, for such blockers).
+        const int trials = 4000;
+        double sum = 0, sumSquares = 0;
+        for (int seed = 0; seed < trials; ++seed) {
+            const double v = hierarchical::elementVisibility(upper, lower, caster, 4, hierarchical::mix(seed + 17));
+            sum += v;
+            sumSquares += v * v;
+        }
+        const double mean = sum / trials;
+        const double standardError = std::sqrt((sumSquares / trials - mean * mean) / trials);
+        MESSAGE("visible fraction " << mean << " +- " << standardError << ", exact " << expected);
+        CHECK(std::abs(mean - expected) < 4 * standardError + 1e-3);
+        CHECK(mean == doctest::Approx(expected).scale(0).epsilon(0.02));
+    }
+}
+
+TEST_CASE("hierarchical penumbra: a half-blocked receiver gathers half the unblocked form factor") {
+    // Lamp below, receiver above, half of every segment between them blocked (see platesWithBlocker):
+    // the receiver's mean radiosity is rho F / 2 exactly. Refined links must each estimate their own
+    // visible share: promoting a refined link to fully visible on one ray gave ~ v (2 - v) = 3/4.
+    const double rho = 0.5;
+    const double F = radiant::test::parallelRectangles(1, 1, 1);
+    const Scene scene = platesWithBlocker(true, false, 1, rho);
+    const PatchMesh mesh = meshed(scene, 0.01);
+    SolverOptions options;
+    options.linkEpsilon = 1e-4;
+    options.minElementArea = 1e-4;
+    HierarchicalSolver solver(scene, mesh, options, nullptr);
+    for (int k = 0; k < 50 && solver.step().residual > 1e-6; ++k) {
+    }
+    double leafSum = 0, patchSum = 0;
+    const ElementTree& tree = solver.elements();
+    for (const ElementIndex e : tree.leaves())
+        if (tree.surface(e) == 1) leafSum += tree.area(e) * tree.radiosity()[e].x;
+    for (std::uint32_t i = mesh.surfaceFirstPatch[1]; i < mesh.surfaceFirstPatch[2]; ++i)
+        patchSum += mesh.patches[i].area * solver.solution()[i].x;
+    const double expected = rho * F / 2;
+    MESSAGE("leaves " << leafSum << ", patches " << patchSum << ", exact " << expected);
+    CHECK(leafSum == doctest::Approx(expected).scale(0).epsilon(0.02));
+    CHECK(patchSum == doctest::Approx(expected).scale(0).epsilon(0.02));
+}
+
+TEST_CASE("hierarchical point value: the links' gather is the exact differential form factor") {
+    // A unit lamp square below a receiver square 1 above: B(x) = rho E F(dx -> lamp) at any point of the
+    // receiver, whatever the leaves (they are coarse here: the value must come from the point itself).
+    const double rho = 0.5;
+    const Scene scene = platesWithBlocker(false, false, 1, rho);
+    const PatchMesh mesh = meshed(scene, 0.05);
+    SolverOptions options;
+    options.linkEpsilon = 1e-3;
+    HierarchicalSolver solver(scene, mesh, options, nullptr);
+    for (int k = 0; k < 50 && solver.step().residual > 1e-9; ++k) {
+    }
+    struct At {
+        double x, y;
+    };
+    for (const At at : {At{0.5, 0.5}, At{0.1, 0.2}, At{0.02, 0.97}, At{0.75, 0.5}}) {
+        CAPTURE(at.x);
+        CAPTURE(at.y);
+        // The lamp split at the point's foot into four rectangles with a corner there.
+        const double expected = rho * (cornerRectangle(at.x, at.y, 1) + cornerRectangle(1 - at.x, at.y, 1) +
+                                       cornerRectangle(at.x, 1 - at.y, 1) + cornerRectangle(1 - at.x, 1 - at.y, 1));
+        const Rgb b = solver.radiosityAt(1, 0, {at.x, at.y, 1});
+        CHECK(b.x == doctest::Approx(expected).scale(0).epsilon(1e-3));
+    }
+}
+
+TEST_CASE("hierarchical furnace: every leaf within 2% of E / (1 - rho) at a modest element count") {
+    const Scene scene = makeFurnace();
+    const PatchMesh mesh = meshed(scene, 0.1);
+    const double expected = scene.materials[0].exitance.value().x / (1 - scene.materials[0].reflectance.x);
+    const HierarchicalSetup setup = hierarchicalSetupForElements(scene, 2000);
+    HierarchicalSolver solver(scene, mesh, setup.options, nullptr, setup.refinement);
+    for (int k = 0; k < 200 && solver.step().residual > 1e-7; ++k) {
+    }
+    const ElementTree& tree = solver.elements();
+    double rms = 0, worst = 0;
+    for (const ElementIndex e : tree.leaves()) {
+        const double off = tree.radiosity()[e].x / expected - 1;
+        rms += tree.area(e) * off * off;
+        worst = std::max(worst, std::abs(off));
+    }
+    rms = std::sqrt(rms / scene.totalArea());
+    double worstPatch = 0;
+    for (const Rgb& b : solver.solution()) worstPatch = std::max(worstPatch, std::abs(b.x / expected - 1));
+    MESSAGE(tree.leafCount() << " leaves: rms " << rms << ", worst leaf " << worst << ", worst patch " << worstPatch);
+    CHECK(rms < 0.005);
+    CHECK(worst < 0.02);
+    CHECK(worstPatch < 0.02);
+}
+
+} // TEST_SUITE
