@@ -13,11 +13,13 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #if __has_include("radiometry/scene/SceneLibrary.h")
 #include "radiometry/scene/SceneLibrary.h"
@@ -33,10 +35,11 @@ struct ProbeCommandOptions {
     std::string point;
     std::string normal;
     std::string target;  ///< empty: the first emitting surface
-    std::string method = "gauss-seidel";
-    double maxPatchArea = MeshingOptions{}.maxPatchArea;
-    double tolerance = 1e-4;
-    std::size_t maxIterations = 10000;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
+    ViewArguments view{"", "", 0, "--look-at"};  // --target names the measured surface
     std::string json = "-";
 };
 
@@ -47,25 +50,6 @@ Scene loadProbeScene(const std::string& nameOrPath) {
     if (nameOrPath == "cornell-box") return makeCornellBox();
     throw RadiantError({nameOrPath, ""}, "unknown scene (this build knows only 'cornell-box')");
 #endif
-}
-
-/// "X,Y,Z" -> vector; anything else is an error naming the option and the value.
-glm::dvec3 parseVector(const std::string& text, const char* option) {
-    glm::dvec3 v(0.0);
-    std::size_t start = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const std::size_t end = axis < 2 ? text.find(',', start) : text.size();
-        bool ok = end != std::string::npos && end > start;
-        if (ok) {
-            const std::string field = text.substr(start, end - start);
-            char* parsedEnd = nullptr;
-            v[axis] = std::strtod(field.c_str(), &parsedEnd);
-            ok = parsedEnd == field.c_str() + field.size() && std::isfinite(v[axis]);
-        }
-        if (!ok) throw RadiantError({"", option}, "expected three numbers X,Y,Z, got '" + text + "'");
-        start = end + 1;
-    }
-    return v;
 }
 
 std::size_t chooseTarget(const Scene& scene, const std::string& name) {
@@ -116,7 +100,9 @@ int runProbe(const ProbeCommandOptions& options) {
     std::size_t iterations = 0;
     double residual = 1;
     try {
-        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+        SolverOptions solverOptions;
+        solverOptions.view = viewFromArguments(options.view, scene);
+        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
             ++iterations;
@@ -182,6 +168,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     return {sub, [options] { return runProbe(*options); }};
 }

@@ -1,16 +1,19 @@
-// `radiant render SCENE --png FILE`: load, mesh, solve to residual 1e-3 (no solver thread: the
-// command line waits anyway), then draw from the scene's home camera into an offscreen framebuffer
-// of a hidden window's GL context and write the PNG.
+// `radiant render SCENE --png FILE`: load, mesh, solve to the default tolerance (no solver thread:
+// the command line waits anyway), then draw from the scene's home camera (or --eye/--target/--fov)
+// into an offscreen framebuffer of a hidden window's GL context and write the PNG.
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
@@ -25,8 +28,11 @@ struct RenderOptions {
     std::string png;
     int width = 1600;
     int height = 1000;
-    std::string method = "progressive";
-    double maxPatchArea = 0.01;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
+    ViewArguments view;
     bool falseColour = false;
     bool logScale = false;
     bool flat = false;
@@ -36,8 +42,6 @@ struct RenderOptions {
 
 // The lab's background: a dark neutral grey that no wall colour competes with.
 const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
-constexpr double kTolerance = 1e-3;
-constexpr std::size_t kMaxIterations = 100000;
 
 int runRender(const RenderOptions& options) {
     if (options.width < 1 || options.height < 1 || options.width > 16384 || options.height > 16384)
@@ -46,6 +50,8 @@ int runRender(const RenderOptions& options) {
                                                          std::to_string(options.height));
     if (!(options.maxPatchArea > 0))
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
+    if (!(options.tolerance > 0))
+        throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
     const SolverMethod method = parseMethod(options.method);
     // The GL context first, so a missing display fails before the solve rather than after. Any
     // window will do: the picture goes to a framebuffer of the requested size.
@@ -57,10 +63,15 @@ int runRender(const RenderOptions& options) {
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
-    const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
+    // One view for the picture and for importance's refinement: what is drawn is what was refined.
+    const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
+    const std::optional<View> view = viewFromArguments(options.view, scene, aspect);
+    SolverOptions solverOptions;
+    solverOptions.view = view;
+    const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
     IterationStats stats;
     do stats = solver->step();
-    while (stats.residual > kTolerance && stats.iteration < kMaxIterations);
+    while (stats.residual > options.tolerance && stats.iteration < options.maxIterations);
 
     render::PatchRenderer renderer;
     renderer.setMesh(scene, mesh, 1);
@@ -76,7 +87,8 @@ int runRender(const RenderOptions& options) {
     settings.highlightShooter = false;
     renderer.setSettings(settings);
     const render::ImageRgb8 image =
-        render::renderOffscreen(renderer, render::homeCamera(scene), options.width, options.height, kBackground);
+        render::renderOffscreen(renderer, view ? render::cameraFromView(*view) : render::homeCamera(scene), options.width,
+                                options.height, kBackground);
     render::writePng(image, options.png);
     std::printf("%s: %zu patches, %s, %zu iterations, residual %.3g; wrote %s (%d x %d)\n", options.scene.c_str(),
                 mesh.size(), std::string(methodName(method)).c_str(), stats.iteration, stats.residual,
@@ -95,7 +107,7 @@ int runRender(const RenderOptions& options) {
 
 Subcommand addRenderCommand(CLI::App& root) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* sub = root.add_subcommand("render", "Solve a scene and write a picture of it from its home camera");
+    CLI::App* sub = root.add_subcommand("render", "Solve a scene and write a picture of it from its home camera or --eye/--target/--fov");
     sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
     sub->add_option("--png", options->png, "PNG file to write")->required();
     sub->add_option("--width", options->width, "image width in pixels")->capture_default_str();
@@ -104,6 +116,9 @@ Subcommand addRenderCommand(CLI::App& root) {
                     "jacobi, gauss-seidel, progressive, hierarchical or importance")
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
+    sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
+    sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_flag("--false-colour,--false-color", options->falseColour,
                   "total radiosity in W/m^2 through viridis instead of the tone-mapped picture");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");

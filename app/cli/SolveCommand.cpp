@@ -14,9 +14,11 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #if __has_include("radiometry/scene/SceneLibrary.h")
 #include "radiometry/scene/SceneLibrary.h"
@@ -29,10 +31,11 @@ namespace {
 
 struct SolveOptions {
     std::string scene;
-    std::string method = "gauss-seidel";
-    double maxPatchArea = MeshingOptions{}.maxPatchArea;
-    double tolerance = 1e-3;
-    std::size_t maxIterations = 100000;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
+    ViewArguments view;
     std::string json;
     std::string csv;
 };
@@ -113,7 +116,9 @@ int runSolve(const SolveOptions& options) {
     std::unique_ptr<Solver> solver;
     {
         const ProgressLine bar(progress, "form factors");
-        solver = makeSolver(method, scene, mesh, SolverOptions{}, &progress);
+        SolverOptions solverOptions;
+        solverOptions.view = viewFromArguments(options.view, scene);
+        solver = makeSolver(method, scene, mesh, solverOptions, &progress);
     }
     const double formFactorSeconds = secondsSince(formFactorStart);
 
@@ -189,6 +194,7 @@ Subcommand addSolveCommand(CLI::App& root) {
     sub->add_option("--tolerance", options->tolerance, "Stop at this residual (fraction of emitted power)")
         ->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "Stop after this many steps")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
     return {sub, [options] { return runSolve(*options); }};

@@ -5,6 +5,7 @@
 //   B_i = E_i + rho_i * sum_j F_ij B_j      (per band; F_ij from patch i to patch j)
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -13,6 +14,7 @@
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/scene/View.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -40,9 +42,8 @@ struct SolverOptions {
     double linkEpsilon = 1e-4;         ///< hierarchical: BF refinement threshold, W/m^2 x m^2 scale-free
     double minElementArea = 1e-5;      ///< hierarchical: m^2, elements are not split below this
     std::uint64_t seed = 1;
-    /// Importance: the camera whose view drives refinement (position, target, up, vertical fov in radians).
-    glm::dvec3 eye{0.278, 0.273, -0.8}, target{0.278, 0.273, 0.0}, up{0, 1, 0};
-    double verticalFov = 0.6911;       ///< 2 atan(12.5 / 35): the Cornell camera
+    /// Importance: the view whose image drives refinement; none: the scene's home view (View.h).
+    std::optional<View> view;
     /// Gathering: refuse (BudgetError, before allocating) a form-factor matrix that may need more bytes.
     double matrixBudgetBytes = 4e9;
 };
