@@ -20,7 +20,7 @@ namespace radiant {
 ImportanceSolver::ImportanceSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                    Progress* progress)
     : HierarchicalSolver(scene, mesh, options, progress), sceneArea_(scene.totalArea()) {
-    castEyeRays(scene, options.view.value_or(homeView(scene)));
+    castEyeRays(scene, options.view ? *options.view : homeView(scene));  // homeView casts rays: only when needed
     setImportanceToEmission();
     afterSolutionMapped();
 }

@@ -9,10 +9,10 @@ namespace radiant {
 
 struct SolveDefaults {
     SolverMethod method = SolverMethod::GaussSeidel;
-    /// m^2: 2,170 patches in the Cornell box, where Gauss-Seidel is within 0.7% mean and 2.3%
-    /// worst of a path tracer at points (issue 14's measurement at ~2,100 patches); at 0.01 m^2
-    /// (260 patches) it was 4.5% / 21%, and the probe's "M + rho E" check 16-23% off on the floor.
-    /// (MeshingOptions' own 0.01 is the library's, for code that meshes without asking.)
+    /// m^2: 2,170 patches in the Cornell box, where Gauss-Seidel is within 0.74% mean and 1.24%
+    /// worst of the path tracer at 10 points; 5.9% / 20% at 0.01 m^2 (260 patches). The table and
+    /// the cost (seconds of form factors) are in docs/ARCHITECTURE.md, "Defaults". MeshingOptions'
+    /// own 0.01 is the library's, for code that meshes without asking.
     double maxPatchArea = 0.001;
     /// Stop when the method's residual (Solver.h) falls below this.
     double tolerance = 1e-4;
