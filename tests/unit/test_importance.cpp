@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "app/solver/SolverThread.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/scene/View.h"
@@ -128,6 +129,29 @@ TEST_CASE("unit cube, rho 0.5, 0.01 m^2: importance from the home view agrees wi
         MESSAGE(cube.surfaces[s].name, ": importance ", got[s], ", Gauss-Seidel ", expected[s]);
         CHECK(got[s] == doctest::Approx(expected[s]).scale(0).epsilon(0.02));
     }
+}
+
+TEST_CASE("the solver thread takes the lab's camera: a blind view is an error shown, a good one re-solves") {
+    using namespace radiant::app;
+    auto cube = std::make_shared<const Scene>(makeUnitCube());
+    SolverThread thread;
+    thread.send(command::LoadScene{cube, MeshingOptions{0.05}});
+    thread.send(command::SetMethod{SolverMethod::Importance});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    REQUIRE(thread.snapshot()->error.empty());
+    const std::size_t builds = thread.snapshot()->solverBuilds;
+    // Outside the closed cube: every eye ray hits a wall's back.
+    thread.send(command::SetView{View{{0.5, 0.5, -3.0}, {0.5, 0.5, 0.5}, {0, 1, 0}, 0.6, 1.6}});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->error.find("sees no surface's front") != std::string::npos);
+    // Inside, looking at the floor: accepted, the same solver refines for it and runs to the tolerance.
+    thread.send(command::SetView{View{{0.5, 0.9, 0.5}, {0.5, 0.0, 0.5}, {0, 0, 1}, 1.0, 1.6}});
+    thread.waitUntilIdle();
+    const auto snapshot = thread.snapshot();
+    CHECK(snapshot->error.empty());
+    CHECK(snapshot->solverBuilds == builds);
+    CHECK(snapshot->stats.residual < snapshot->tolerance);
 }
 
 } // TEST_SUITE
