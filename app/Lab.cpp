@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <limits>
 #include <optional>
 
 #include "app/panels/DisplayPanel.h"
@@ -35,10 +34,12 @@
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/scene/View.h"
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
 #include "render/overlay/DepthVisibility.h"
+#include "render/camera/HomeCamera.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -60,19 +61,12 @@ std::string windowTitle(const std::string& sceneName, SolverMethod method) {
     return "Radiant - " + sceneLabel(sceneName) + " - " + methodLabel(method);
 }
 
-render::OrbitCamera homeCamera(const Scene& scene) {
-    glm::dvec3 lo(std::numeric_limits<double>::max());
-    glm::dvec3 hi = -lo;
-    for (const Surface& surface : scene.surfaces)
-        for (const Face& face : surface.faces)
-            for (const glm::dvec3& v : face.vertices) {
-                lo = glm::min(lo, v);
-                hi = glm::max(hi, v);
-            }
-    const glm::dvec3 centre = (lo + hi) / 2.0;
-    // The Cornell box has a published camera; other scenes are framed from their bounds.
-    return render::OrbitCamera(scene.name == "cornell-box" ? render::cornellCamera() : render::framingCamera(lo, hi),
-                               centre);
+/// The scene's one home camera (render/camera/HomeCamera.h), orbiting the centre of its bounds.
+render::OrbitCamera orbitFromHome(const Scene& scene) {
+    glm::dvec3 lo, hi;
+    const render::Camera home = render::homeCamera(scene);
+    if (!sceneBounds(scene, lo, hi)) return render::OrbitCamera(home, home.eye + home.forward);
+    return render::OrbitCamera(home, (lo + hi) / 2.0);
 }
 
 } // namespace
@@ -80,10 +74,10 @@ render::OrbitCamera homeCamera(const Scene& scene) {
 struct Lab::State {
     explicit State(const LabOptions& options)
         : initialScene(openScene(options.scene)),
-          window({options.width, options.height, windowTitle(initialScene->name, SolverMethod::GaussSeidel),
+          window({options.width, options.height, windowTitle(initialScene->name, kSolveDefaults.method),
                   options.visible, options.vsync}),
           gl(render::queryGlInfo()),
-          orbit(homeCamera(*initialScene)),
+          orbit(orbitFromHome(*initialScene)),
           panelsVisible(options.showPanels),
           live(solverThread) {
         display.uiScale = options.uiScale;
@@ -177,7 +171,8 @@ struct Lab::State {
         patches->setFocusLinks(s.focusLinkSegments);
         patches->setImportance(s.importance);
         if (s.scene->name != sceneShown) {
-            if (!sceneShown.empty()) orbit = homeCamera(*s.scene);
+            if (!sceneShown.empty()) orbit = orbitFromHome(*s.scene);
+            viewSent.reset();  // the solver thread forgot the old scene's camera
             sceneShown = s.scene->name;
         }
         const std::string title = windowTitle(s.scene->name, s.method);
@@ -289,6 +284,7 @@ struct Lab::State {
                                              static_cast<int>(static_cast<float>(viewport.height) / pixelRatio)};
         controller.update(orbit, viewInUiUnits);
         lastCamera = orbit.camera();
+        sendViewWhenStill(now);
         if (const std::optional<glm::dvec2> click = controller.click())
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
@@ -308,6 +304,24 @@ struct Lab::State {
         }
         window.swapBuffers();
         ++frameCount;
+    }
+
+    /// Importance-driven radiosity refines for the camera: each view it rests at (not every frame
+    /// of a drag, which would restart the refinement each time) goes to the solver thread.
+    void sendViewWhenStill(double now) {
+        const View view = render::viewFromCamera(lastCamera, viewport.aspect());
+        const auto same = [](const View& a, const View& b) {
+            return a.eye == b.eye && a.target == b.target && a.up == b.up && a.verticalFov == b.verticalFov &&
+                   a.aspect == b.aspect;
+        };
+        if (!viewMoving || !same(view, *viewMoving)) {
+            viewMoving = view;
+            viewMovedAt = now;
+            return;
+        }
+        if (now - viewMovedAt < kCameraRestSeconds || (viewSent && same(view, *viewSent))) return;
+        live.send(command::SetView{view});
+        viewSent = view;
     }
 
     void saveScreenshot(const render::ImageRgb8& image) {
@@ -343,6 +357,9 @@ struct Lab::State {
     render::Camera lastCamera;
     bool screenshotRequested = false;
     std::optional<command::FocusedPoint> focusSent;
+    static constexpr double kCameraRestSeconds = 0.3;
+    std::optional<View> viewMoving, viewSent;
+    double viewMovedAt = 0;
     std::string message;
     std::uint64_t frameCount = 0;
     /// How long frames keep coming after the last input event (s).

@@ -2,6 +2,8 @@
 // The interactive lab: the window, the frame loop and the panels.
 #include <string>
 
+#include "radiometry/solver/SolveDefaults.h"
+
 namespace radiant::app {
 
 struct LabOptions {
@@ -12,7 +14,7 @@ struct LabOptions {
     bool visible = true;     ///< false: an offscreen window (tests that need no display output)
     bool vsync = true;
     float uiScale = 1.0f;    ///< ImGui text and spacing scale; RADIANT_UI_SCALE overrides it in runLab
-    double maxPatchArea = 0.01;  ///< m^2: 100 cm^2, a few hundred patches in the Cornell box
+    double maxPatchArea = kSolveDefaults.maxPatchArea;  ///< m^2
     bool runOnStart = true;      ///< solve as soon as the form factors are ready; false waits for Run/Step
 };
 

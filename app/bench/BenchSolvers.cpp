@@ -12,6 +12,7 @@
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ProgressiveSolver.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
@@ -115,6 +116,17 @@ BenchTable benchSolvers(const BenchOptions& options) {
         const double setupSeconds = secondsSince(setupStart);
         stepRow("progressive (" + std::to_string(solver->shooters().size()) + " shooters)", std::to_string(mesh.size()),
                 setupSeconds, *solver);
+    }
+    {
+        // What `radiant solve cornell-box` and the lab do at the defaults (SolveDefaults.h): the
+        // form-factor column is how long the lab takes to open before it converges.
+        MeshingOptions meshing;
+        meshing.maxPatchArea = kSolveDefaults.maxPatchArea;
+        const PatchMesh mesh = meshScene(scene, meshing);
+        const auto setupStart = std::chrono::steady_clock::now();
+        auto solver = makeSolver(kSolveDefaults.method, scene, mesh);
+        stepRow("defaults: " + std::string(methodName(kSolveDefaults.method)), std::to_string(mesh.size()),
+                secondsSince(setupStart), *solver);
     }
     table.notes = {
         "Residual: gathering methods max over bands of sum_i A_i |B_i - E_i - rho_i sum_j F_ij B_j| / sum_i A_i E_i;",

@@ -14,10 +14,12 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
@@ -29,32 +31,14 @@ struct ProbeCommandOptions {
     std::string point;
     std::string normal;
     std::string target;  ///< empty: the first emitting surface
-    std::string method = "gauss-seidel";
-    double maxPatchArea = MeshingOptions{}.maxPatchArea;
-    double tolerance = 1e-4;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
     double linkTolerance = SolverOptions{}.linkEpsilon;
-    std::size_t maxIterations = 10000;
+    ViewArguments view{"", "", 0, "--look-at"};  // --target names the measured surface
     std::string json = "-";
 };
-
-/// "X,Y,Z" -> vector; anything else is an error naming the option and the value.
-glm::dvec3 parseVector(const std::string& text, const char* option) {
-    glm::dvec3 v(0.0);
-    std::size_t start = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const std::size_t end = axis < 2 ? text.find(',', start) : text.size();
-        bool ok = end != std::string::npos && end > start;
-        if (ok) {
-            const std::string field = text.substr(start, end - start);
-            char* parsedEnd = nullptr;
-            v[axis] = std::strtod(field.c_str(), &parsedEnd);
-            ok = parsedEnd == field.c_str() + field.size() && std::isfinite(v[axis]);
-        }
-        if (!ok) throw RadiantError({"", option}, "expected three numbers X,Y,Z, got '" + text + "'");
-        start = end + 1;
-    }
-    return v;
-}
 
 std::size_t chooseTarget(const Scene& scene, const std::string& name) {
     if (!name.empty()) {
@@ -100,6 +84,7 @@ int runProbe(const ProbeCommandOptions& options) {
     try {
         SolverOptions solverOptions;
         solverOptions.linkEpsilon = options.linkTolerance;
+        solverOptions.view = viewFromArguments(options.view, scene);
         std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
@@ -165,6 +150,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     return {sub, [options] { return runProbe(*options); }};
 }

@@ -1,19 +1,23 @@
-// `radiant render SCENE --png FILE`: load, mesh, solve to residual 1e-3 (no solver thread: the
-// command line waits anyway), then draw from the scene's home camera into an offscreen framebuffer
-// of a headless EGL context (a hidden window's where EGL is missing) and write the PNG.
+// `radiant render SCENE --png FILE`: load, mesh, solve to the default tolerance (no solver thread:
+// the command line waits anyway), then draw from a glTF camera (--camera), a view (--eye/--target/--fov)
+// or the scene's home camera into an offscreen framebuffer of a headless EGL context (a hidden
+// window's where EGL is missing) and write the PNG.
 #include <CLI/CLI.hpp>
 #include <algorithm>
 #include <cstdio>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "app/window/OffscreenContext.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
@@ -28,9 +32,12 @@ struct RenderOptions {
     std::string png;
     int width = 1600;
     int height = 1000;
-    std::string method = "progressive";
-    double maxPatchArea = 0.01;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
     double linkTolerance = SolverOptions{}.linkEpsilon;
+    ViewArguments view;
     bool falseColour = false;
     bool logScale = false;
     bool flat = false;
@@ -41,8 +48,6 @@ struct RenderOptions {
 
 // The lab's background: a dark neutral grey that no wall colour competes with.
 const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
-constexpr double kTolerance = 1e-3;
-constexpr std::size_t kMaxIterations = 100000;
 
 /// --camera: the scene's camera of that name, else of that index (names win: "1" may be a name).
 render::Camera sceneCamera(const Scene& scene, const std::string& wanted) {
@@ -85,6 +90,8 @@ int runRender(const RenderOptions& options) {
         throw RadiantError({"", "--max-patch-area"}, "must be > 0, got " + std::to_string(options.maxPatchArea));
     if (!(options.linkTolerance > 0))
         throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
+    if (!(options.tolerance > 0))
+        throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
     const SolverMethod method = parseMethod(options.method);
     // The GL context first, so a missing one fails before the solve rather than after.
     const OffscreenContext context("radiant render");
@@ -92,12 +99,15 @@ int runRender(const RenderOptions& options) {
     LoadedScene loaded = loadScene(options.scene);
     for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
     const Scene& scene = loaded.scene;
-    const render::Camera camera = options.camera.empty() ? render::homeCamera(scene) : sceneCamera(scene, options.camera);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
+    // One view for the picture and for importance's refinement: what is drawn is what was refined.
+    const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
+    const std::optional<View> view = viewFromArguments(options.view, scene, aspect);
     SolverOptions solverOptions;
     solverOptions.linkEpsilon = options.linkTolerance;
+    solverOptions.view = view;
     std::unique_ptr<Solver> solver;
     try {
         solver = makeSolver(method, scene, mesh, solverOptions);
@@ -105,9 +115,12 @@ int runRender(const RenderOptions& options) {
         if (!e.where().file.empty()) throw;
         throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
     }
+    const render::Camera camera = !options.camera.empty() ? sceneCamera(scene, options.camera)
+                                  : view                  ? render::cameraFromView(*view)
+                                                          : render::homeCamera(scene);
     IterationStats stats;
     do stats = solver->step();
-    while (stats.residual > kTolerance && stats.iteration < kMaxIterations);
+    while (stats.residual > options.tolerance && stats.iteration < options.maxIterations);
 
     render::PatchRenderer renderer;
     renderer.setMesh(scene, mesh, 1);
@@ -142,7 +155,7 @@ int runRender(const RenderOptions& options) {
 
 Subcommand addRenderCommand(CLI::App& root) {
     auto options = std::make_shared<RenderOptions>();
-    CLI::App* sub = root.add_subcommand("render", "Solve a scene and write a picture of it from its home camera");
+    CLI::App* sub = root.add_subcommand("render", "Solve a scene and write a picture of it from its home camera or --eye/--target/--fov");
     sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
     sub->add_option("--png", options->png, "PNG file to write")->required();
     sub->add_option("--width", options->width, "image width in pixels")->capture_default_str();
@@ -152,6 +165,9 @@ Subcommand addRenderCommand(CLI::App& root) {
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
+    sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
+    sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_flag("--false-colour,--false-color", options->falseColour,
                   "total radiosity in W/m^2 through viridis instead of the tone-mapped picture");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");

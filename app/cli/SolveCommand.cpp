@@ -14,8 +14,10 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
@@ -24,11 +26,12 @@ namespace {
 
 struct SolveOptions {
     std::string scene;
-    std::string method = "gauss-seidel";
-    double maxPatchArea = MeshingOptions{}.maxPatchArea;
-    double tolerance = 1e-3;
+    std::string method{methodName(kSolveDefaults.method)};
+    double maxPatchArea = kSolveDefaults.maxPatchArea;
+    double tolerance = kSolveDefaults.tolerance;
+    std::size_t maxIterations = kSolveDefaults.maxIterations;
     double linkTolerance = SolverOptions{}.linkEpsilon;
-    std::size_t maxIterations = 100000;
+    ViewArguments view;
     std::string json;
     std::string csv;
 };
@@ -103,6 +106,7 @@ int runSolve(const SolveOptions& options) {
         const ProgressLine bar(progress, "form factors");
         SolverOptions solverOptions;
         solverOptions.linkEpsilon = options.linkTolerance;
+        solverOptions.view = viewFromArguments(options.view, scene);
         try {
             solver = makeSolver(method, scene, mesh, solverOptions, &progress);
         } catch (const BudgetError& e) {
@@ -186,6 +190,7 @@ Subcommand addSolveCommand(CLI::App& root) {
         ->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "Stop after this many steps")->capture_default_str();
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
+    addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
     return {sub, [options] { return runSolve(*options); }};

@@ -12,6 +12,7 @@
 #include "app/solver/SolveHistory.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
@@ -31,11 +32,11 @@ struct Snapshot {
     std::shared_ptr<const Scene> scene;     ///< materials as currently set
     std::shared_ptr<const PatchMesh> mesh;  ///< patches the radiosity below is indexed by
     std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
-    SolverMethod method = SolverMethod::GaussSeidel;
+    SolverMethod method = kSolveDefaults.method;
     IterationStats stats;                   ///< of the last step
     SolveHistory history;                   ///< every step since the last reset, for the plots
     bool running = false;                   ///< stepping by itself until converged or paused
-    double tolerance = 1e-4;                ///< running stops when the residual falls below this
+    double tolerance = kSolveDefaults.tolerance;  ///< running stops when the residual falls below this
     double linkTolerance = SolverOptions{}.linkEpsilon;  ///< hierarchical/importance refinement (SolverOptions)
     std::string error;                      ///< the last command's failure, empty when it succeeded
     /// Solvers built (each one a form-factor computation or initial linking) since the thread

@@ -11,6 +11,7 @@
 
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/scene/View.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app::command {
@@ -51,6 +52,12 @@ struct FocusedPoint {
 struct FocusPoint {
     std::optional<FocusedPoint> at;  ///< nullopt: none
 };
+/// The lab's camera, sent when it stops moving: importance-driven radiosity refines for this view
+/// (from the current links and solution); other methods keep it for when importance is chosen. A
+/// new scene forgets it (its home view applies until the next one).
+struct SetView {
+    View view;
+};
 /// Replaces the scene (already loaded and checked by the caller) and meshes it.
 struct LoadScene {
     std::shared_ptr<const Scene> scene;
@@ -62,5 +69,5 @@ struct LoadScene {
 namespace radiant::app {
 using SolverCommand = std::variant<command::Run, command::Pause, command::Step, command::Reset, command::SetMethod,
                                    command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene,
-                                   command::FocusPoint, command::SetLinkTolerance>;
+                                   command::FocusPoint, command::SetLinkTolerance, command::SetView>;
 }

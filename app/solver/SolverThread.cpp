@@ -11,6 +11,7 @@
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/HierarchicalSolver.h"
+#include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/WorkerPool.h"
 
 namespace radiant::app {
@@ -35,10 +36,11 @@ struct SolverThread::State {
     /// references to them, while materials edits replace `scene`.
     std::shared_ptr<const Scene> solverScene;
     std::shared_ptr<const PatchMesh> solverMesh;
-    SolverMethod method = SolverMethod::GaussSeidel;
+    SolverMethod method = kSolveDefaults.method;
+    std::optional<View> view;  ///< the lab's camera for importance; none: the scene's home view
     bool running = false;
     std::size_t pendingSteps = 0;
-    double tolerance = 1e-4;
+    double tolerance = kSolveDefaults.tolerance;
     SolveHistoryBuilder history;
     std::uint64_t generation = 0;
     std::uint64_t meshGeneration = 0;
@@ -260,6 +262,10 @@ void SolverThread::apply(State& state, SolverCommand& command) {
             } else if constexpr (std::is_same_v<C, command::FocusPoint>) {
                 state.focus = c.at;
                 state.focusStale = true;
+            } else if constexpr (std::is_same_v<C, command::SetView>) {
+                // Throws (the previous view stays) for a view with no importance: the lab shows why.
+                if (state.solver && state.solver->setView(*state.solverScene, c.view)) state.running = true;
+                state.view = c.view;
             } else if constexpr (std::is_same_v<C, command::SetTolerance>) {
                 if (!(c.tolerance > 0)) throw RadiantError({"", "tolerance"}, "must be positive, got " + std::to_string(c.tolerance));
                 state.tolerance = c.tolerance;
@@ -267,7 +273,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 if (!(c.linkTolerance > 0))
                     throw RadiantError({"", "link tolerance"}, "must be positive, got " + std::to_string(c.linkTolerance));
                 options_.linkEpsilon = c.linkTolerance;
-                if (state.method == SolverMethod::Hierarchical || state.method == SolverMethod::Importance) {
+                if (methodInfo(state.method).traits.links) {
                     state.solver.reset();  // the links were refined to the old tolerance
                     state.history.clear();
                     ensureSolver(state);
@@ -295,7 +301,10 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 if (state.solver) state.solver->setMaterial(c.surface, c.reflectance, c.exitance);
             } else if constexpr (std::is_same_v<C, command::Remesh> || std::is_same_v<C, command::LoadScene>) {
                 std::shared_ptr<const Scene> scene = state.scene;
-                if constexpr (std::is_same_v<C, command::LoadScene>) scene = c.scene;
+                if constexpr (std::is_same_v<C, command::LoadScene>) {
+                    scene = c.scene;
+                    state.view.reset();  // a camera of the old scene
+                }
                 if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
                 activity_.store(SolverActivity::Meshing);
                 progress_.cancelRequested.store(false);
@@ -341,7 +350,9 @@ void SolverThread::ensureSolver(State& state) {
     state.solverMesh = state.mesh;
     ++state.solverBuilds;
     state.linksStale = true;
-    state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options_, &progress_);
+    SolverOptions options = options_;
+    if (state.view) options.view = state.view;
+    state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
     activity_.store(SolverActivity::Idle);
 }
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <utility>
 
 #include <glm/geometric.hpp>
@@ -19,24 +20,48 @@ namespace radiant {
 ImportanceSolver::ImportanceSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                    Progress* progress)
     : HierarchicalSolver(scene, mesh, options, progress), sceneArea_(scene.totalArea()) {
-    castEyeRays(scene, options);
+    castEyeRays(scene, options.view ? *options.view : homeView(scene));  // homeView casts rays: only when needed
+    setImportanceToEmission();
+    afterSolutionMapped();
+    return true;
+}
+
+bool ImportanceSolver::setView(const Scene& scene, const View& view) {
+    castEyeRays(scene, view);
+    // Hand the new hits down the existing tree, parents before children (a child's index is always
+    // above its parent's), as onSubdivided did when each was split.
+    const ElementTree& tree = elements();
+    for (ElementIndex e = 0; e < tree.size(); ++e)
+        if (!tree.isLeaf(e)) distributeHits(e);
+    // Importance restarts from the new emission; radiosity and links stay, and the next steps
+    // refine where the new view needs it and gather again.
     setImportanceToEmission();
     afterSolutionMapped();
 }
 
-void ImportanceSolver::castEyeRays(const Scene& scene, const SolverOptions& options) {
-    const glm::dvec3 forwardRaw = options.target - options.eye;
-    const glm::dvec3 rightRaw = glm::cross(forwardRaw, options.up);
-    if (!(glm::length(forwardRaw) > 0) || !(glm::length(rightRaw) > 0) || !(options.verticalFov > 0) ||
-        !(options.verticalFov < 3.1))
+namespace {
+
+std::string vectorText(const glm::dvec3& v) {
+    return "(" + std::to_string(v.x) + ", " + std::to_string(v.y) + ", " + std::to_string(v.z) + ")";
+}
+
+} // namespace
+
+void ImportanceSolver::castEyeRays(const Scene& scene, const View& view) {
+    const glm::dvec3 forwardRaw = view.target - view.eye;
+    const glm::dvec3 rightRaw = glm::cross(forwardRaw, view.up);
+    if (!(glm::length(forwardRaw) > 0) || !(glm::length(rightRaw) > 0) || !(view.verticalFov > 0) ||
+        !(view.verticalFov < 3.1) || !(view.aspect > 0))
         throw RadiantError({scene.name, "importance camera"},
                            "degenerate camera: the eye must differ from the target, up must not be parallel to the "
-                           "view direction, and the vertical field of view (" + std::to_string(options.verticalFov) +
-                               " rad) must lie in (0, 3.1)");
+                           "view direction, the vertical field of view (" + std::to_string(view.verticalFov) +
+                               " rad) must lie in (0, 3.1) and the aspect (" + std::to_string(view.aspect) +
+                               ") be positive");
     const glm::dvec3 forward = glm::normalize(forwardRaw);
     const glm::dvec3 right = glm::normalize(rightRaw);
     const glm::dvec3 up = glm::cross(right, forward);
-    const double halfHeight = std::tan(0.5 * options.verticalFov);
+    const double halfHeight = std::tan(0.5 * view.verticalFov);
+    const double halfWidth = halfHeight * view.aspect;
 
     std::unique_ptr<RayCaster> ownCaster;
     const RayCaster* caster = rayCaster();
@@ -47,16 +72,15 @@ void ImportanceSolver::castEyeRays(const Scene& scene, const SolverOptions& opti
 
     const ElementTree& tree = elements();
     constexpr int n = kImageResolution;
-    rayCount_ = static_cast<std::size_t>(n) * n;
     std::vector<std::vector<std::pair<ElementIndex, glm::dvec3>>> hitsPerThread(threads());
     parallelChunks(static_cast<std::size_t>(n), threads(), 8, [&](std::size_t from, std::size_t to, unsigned thread) {
         for (std::size_t row = from; row < to; ++row)
             for (int column = 0; column < n; ++column) {
-                // Pixel centres of a square image; the hit count per element is its share of the image.
-                const double u = (2 * (column + 0.5) / n - 1) * halfHeight;
+                // Pixel centres of an n x n grid over the image: each ray stands for an equal share of it.
+                const double u = (2 * (column + 0.5) / n - 1) * halfWidth;
                 const double v = (1 - 2 * (static_cast<double>(row) + 0.5) / n) * halfHeight;
                 const glm::dvec3 direction = forward + u * right + v * up;
-                const auto hit = caster->intersect(options.eye, direction);
+                const auto hit = caster->intersect(view.eye, direction);
                 if (!hit || glm::dot(hit->normal, direction) >= 0) continue;  // nothing, or a face's back
                 const ElementIndex root =
                     tree.locate(hit->surface, hit->face, hit->point, std::numeric_limits<double>::infinity());
@@ -65,7 +89,16 @@ void ImportanceSolver::castEyeRays(const Scene& scene, const SolverOptions& opti
     });
     std::vector<std::pair<ElementIndex, glm::dvec3>> all;
     for (auto& buffer : hitsPerThread) all.insert(all.end(), buffer.begin(), buffer.end());
+    // No front face in view: every importance would be zero, the refinement threshold zero, and the
+    // solve would stay on the roots without saying why. Refuse the view instead (and keep the last).
+    if (all.empty())
+        throw RadiantError({scene.name, "importance camera"},
+                           "the view from " + vectorText(view.eye) + " towards " + vectorText(view.target) +
+                               " sees no surface's front (every eye ray misses or hits the back of a face), so "
+                               "importance is zero everywhere and nothing would be refined: aim the camera at the "
+                               "scene's lit side (from inside a closed room)");
     std::stable_sort(all.begin(), all.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    rayCount_ = static_cast<std::size_t>(n) * n;
     hits_.clear();
     hitBegin_.assign(tree.size(), 0);
     hitEnd_.assign(tree.size(), 0);
@@ -93,8 +126,15 @@ void ImportanceSolver::onSubdivided(ElementIndex parent) {
     hitBegin_.resize(tree.size());
     hitEnd_.resize(tree.size());
     importance_.resize(tree.size());
+    distributeHits(parent);
+    const ElementIndex first = tree.firstChild(parent);
+    for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) importance_[c] = importance_[parent];
+}
+
+void ImportanceSolver::distributeHits(ElementIndex parent) {
     // Hand the parent's eye-ray hits to the children that contain them (a point on a shared edge
     // goes to the first).
+    const ElementTree& tree = elements();
     const ElementIndex first = tree.firstChild(parent);
     auto begin = hits_.begin() + hitBegin_[parent];
     const auto end = hits_.begin() + hitEnd_[parent];
@@ -104,7 +144,6 @@ void ImportanceSolver::onSubdivided(ElementIndex parent) {
             last ? end : std::partition(begin, end, [&](const glm::dvec3& p) { return tree.contains(c, p); });
         hitBegin_[c] = static_cast<std::uint32_t>(begin - hits_.begin());
         hitEnd_[c] = static_cast<std::uint32_t>(split - hits_.begin());
-        importance_[c] = importance_[parent];
         begin = split;
     }
 }

@@ -18,9 +18,15 @@ namespace radiant {
 
 class ImportanceSolver : public HierarchicalSolver {
 public:
-    /// Casts kImageResolution^2 eye rays through the image of the camera in `options` (eye,
-    /// target, up, verticalFov; a square image). Throws RadiantError for a degenerate camera.
+    /// Casts kImageResolution^2 eye rays through the image of options.view (the scene's home view
+    /// when none). Throws RadiantError for a degenerate camera, and for a view that sees no
+    /// surface's front: importance would be zero and nothing refined.
     ImportanceSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options, Progress* progress);
+    /// Moves the camera (the lab's, when it stops): casts the eye rays again through the current
+    /// elements and restarts importance from them; radiosity, elements and links stay, and the next
+    /// steps refine for the new view. `scene` is the one the solver was built from. On a
+    /// RadiantError (as the constructor's) the previous view stays in force.
+    bool setView(const Scene& scene, const View& view) override;
 
     [[nodiscard]] SolverMethod method() const override { return SolverMethod::Importance; }
     void reset() override;
@@ -47,7 +53,8 @@ protected:
     [[nodiscard]] double refinementThreshold() const override;
 
 private:
-    void castEyeRays(const Scene& scene, const SolverOptions& options);
+    void castEyeRays(const Scene& scene, const View& view);
+    void distributeHits(ElementIndex parent);
     void setImportanceToEmission();
 
     std::vector<glm::dvec3> hits_;  ///< front-face eye-ray hits, grouped by element

@@ -18,7 +18,8 @@ double bandSum(const Rgb& v) { return v.x + v.y + v.z; }
 
 ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors)
     : materials_(std::move(materials)),
-      formFactors_([f = std::move(formFactors)](std::size_t shooter, std::span<const double>, std::span<double> out) {
+      formFactors_([f = std::move(formFactors)](std::size_t shooter, std::span<const double>, double,
+                                                std::span<double> out) {
           f(shooter, out);
       }) {
     shooters_ = ProgressiveShooters::eachPatch(materials_.size());
@@ -108,7 +109,8 @@ IterationStats ProgressiveSolver::step() {
             unshot_[i] = Rgb(0.0);
         }
         toShooter_.assign(materials_.size(), 0.0);
-        formFactors_(group, memberPower_, toShooter_);
+        const double emitted = bandSum(materials_.emittedPower());
+        formFactors_(group, memberPower_, emitted > 0 ? nextShooterPower_ / emitted : 1.0, toShooter_);
         const Rgb shot = shooterArea_[group] > 0 ? power / shooterArea_[group] : Rgb(0.0);
         for (std::size_t j = 0; j < toShooter_.size(); ++j) {
             if (toShooter_[j] == 0) continue;

@@ -27,8 +27,11 @@ using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double
 /// ShotFormFactors for a group, told where in it the light leaves from: memberPower[k] >= 0 is the
 /// share of the shot's unshot power held by the group's k-th patch (they sum to 1), so visibility
 /// can be sampled where the light is, not over parts of the group that hold none (floor under a box).
-using GroupShotFormFactors =
-    std::function<void(std::size_t group, std::span<const double> memberPower, std::span<double> toShooter)>;
+/// powerShare is the shot's unshot power as a fraction of the emitted power (band sums): a shot that
+/// carries much of the light (the light source's own) gets more visibility rays in penumbrae, since
+/// its noise is not averaged away by later shots.
+using GroupShotFormFactors = std::function<void(std::size_t group, std::span<const double> memberPower,
+                                                double powerShare, std::span<double> toShooter)>;
 
 class ProgressiveSolver final : public Solver {
 public:

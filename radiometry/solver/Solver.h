@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/solver/SolverMethods.h"
+#include "radiometry/scene/View.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -47,9 +49,8 @@ struct SolverOptions {
     double linkEpsilon = 1e-4;
     double minElementArea = 1e-5;      ///< hierarchical: m^2, elements are not split below this
     std::uint64_t seed = 1;
-    /// Importance: the camera whose view drives refinement (position, target, up, vertical fov in radians).
-    glm::dvec3 eye{0.278, 0.273, -0.8}, target{0.278, 0.273, 0.0}, up{0, 1, 0};
-    double verticalFov = 0.6911;       ///< 2 atan(12.5 / 35): the Cornell camera
+    /// Importance: the view whose image drives refinement; none: the scene's home view (View.h).
+    std::optional<View> view;
     /// Gathering: refuse (BudgetError, before allocating) a form-factor matrix that may need more bytes.
     double matrixBudgetBytes = 4e9;
 };
@@ -81,6 +82,10 @@ public:
     [[nodiscard]] virtual const HierarchicalSolver* hierarchy() const { return nullptr; }
     /// Per-patch importance (view-dependent methods); empty otherwise.
     [[nodiscard]] virtual std::span<const double> importance() const { return {}; }
+    /// View-dependent methods refine for `view` from here on (scene: the one the solver was built
+    /// from) and return true; others ignore it and return false. Throws RadiantError for a view that
+    /// sees no surface's front, keeping the previous one.
+    virtual bool setView(const Scene& /*scene*/, const View& /*view*/) { return false; }
 };
 
 /// Builds a solver for the meshed scene with the method's factory from the table. Expensive set-up (form-factor matrix, initial linking)

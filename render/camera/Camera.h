@@ -6,6 +6,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "radiometry/scene/View.h"
 #include "radiometry/units/Angle.h"
 
 namespace radiant::render {
@@ -35,12 +36,16 @@ struct Camera {
     [[nodiscard]] glm::dmat4 viewProjection(double aspect) const { return projection(aspect) * view(); }
 };
 
-/// The Cornell Program of Computer Graphics' camera (oracles.md): eye (0.278, 0.273, -0.8) m looking
-/// along +z, up +y, a 35 mm lens on 25 mm film: field of view 2 atan(12.5 / 35).
-Camera cornellCamera();
+/// The camera of a view (radiometry/scene/View.h), its depth range set from the eye's distance to
+/// the target: near 1/1000 of it (at least 0.1 mm), far 100 times it, room to zoom out.
+Camera cameraFromView(const View& view);
+/// What the camera shows in a viewport of this aspect (width / height), as the importance solver
+/// takes it: target one metre ahead, the vertical field of that aspect.
+View viewFromCamera(const Camera& camera, double aspect);
 
-/// A camera looking three-quarters down onto the box [lo, hi] (mostly along +z, up +y), far enough that its
-/// bounding sphere fits the field of view: the home view of scenes without a published camera.
+/// cameraFromView(cornellView()).
+Camera cornellCamera();
+/// cameraFromView(framingView(lo, hi)).
 Camera framingCamera(const glm::dvec3& lo, const glm::dvec3& hi);
 
 /// Where a world point lands in the viewport, in framebuffer pixels from the top-left; z is the

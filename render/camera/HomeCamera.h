@@ -1,14 +1,13 @@
 #pragma once
-// The view a scene opens with: the Cornell camera for the Cornell box (its published camera), a
-// three-quarter framing of the bounds for anything else. GL-free.
+// The camera a scene opens with: the one home view (radiometry/scene/View.h: the Cornell camera for
+// the Cornell box, a three-quarter framing of the bounds for anything else) as a render camera.
+// The lab, `radiant render` and the importance solver's default all start from it. GL-free.
 #include "radiometry/scene/Scene.h"
 #include "render/camera/Camera.h"
 
 namespace radiant::render {
 
-/// Axis-aligned bounds of every face vertex (m); lo > hi for an empty scene.
-void sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
-
+/// cameraFromView(homeView(scene)).
 Camera homeCamera(const Scene& scene);
 
 } // namespace radiant::render

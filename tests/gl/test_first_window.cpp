@@ -136,6 +136,7 @@ TEST_SUITE("gl window") {
 TEST_CASE("the first window draws the Cornell box as the Cornell camera sees it") {
     requireDisplay();
     LabOptions options;
+    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
     options.width = 960;
     options.height = 600;
     options.showPanels = false;
@@ -157,6 +158,7 @@ TEST_CASE("the first window draws the Cornell box as the Cornell camera sees it"
 TEST_CASE("with the panels docked on the left the box keeps its layout in the remaining view") {
     requireDisplay();
     LabOptions options;
+    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
     options.width = 1200;
     options.height = 700;
     Lab lab(options);
@@ -175,6 +177,7 @@ TEST_CASE("with the panels docked on the left the box keeps its layout in the re
 TEST_CASE("an offscreen capture matches the Cornell layout at a size unlike the window's") {
     requireDisplay();
     LabOptions options;
+    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
     options.width = 640;
     options.height = 400;
     options.showPanels = false;

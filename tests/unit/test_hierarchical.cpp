@@ -143,10 +143,7 @@ SolverOptions unoccluded(double linkEpsilon = 1e-4, double minElementArea = 1e-4
 std::unique_ptr<HierarchicalSolver> makeMethod(SolverMethod method, const Scene& scene, const PatchMesh& mesh,
                                                SolverOptions options, glm::dvec3 eye, glm::dvec3 target,
                                                glm::dvec3 up = {0, 1, 0}) {
-    options.eye = eye;
-    options.target = target;
-    options.up = up;
-    options.verticalFov = 1.2;
+    options.view = View{eye, target, up, 1.2, 1.0};
     if (method == SolverMethod::Importance) return std::make_unique<ImportanceSolver>(scene, mesh, options, nullptr);
     return std::make_unique<HierarchicalSolver>(scene, mesh, options, nullptr);
 }
@@ -390,7 +387,7 @@ TEST_CASE("importance: zero where the camera cannot see, positive in view") {
     scene.surfaces.push_back(
         {"behind", 0, {makeFace({{0.1, 0.1, -1.2}, {0.1, 0.4, -1.2}, {0.4, 0.4, -1.2}, {0.4, 0.1, -1.2}})}, "test"});
     REQUIRE(scene.surfaces.back().faces[0].normal.z < 0);
-    SolverOptions options;  // the Cornell camera
+    SolverOptions options;  // the scene is named cornell-box: its home view is the Cornell camera
     const PatchMesh mesh = facesAsPatches(scene);
     ImportanceSolver solver(scene, mesh, options, nullptr);
     for (int k = 0; k < 10; ++k) solver.step();
@@ -404,7 +401,7 @@ TEST_CASE("importance: zero where the camera cannot see, positive in view") {
         CAPTURE(name);
         CHECK(emitted[i] >= 0);
         // Faces turned away from the eye cannot receive eye rays (a geometric fact, not the code's).
-        if (glm::dot(patch.normal, options.eye - patch.centroid) <= 0) {
+        if (glm::dot(patch.normal, cornellView().eye - patch.centroid) <= 0) {
             CHECK(emitted[i] == 0);
             ++turnedAway;
         }
