@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/reference/PathTracer.h"
@@ -35,25 +36,6 @@ struct ReferenceCommandOptions {
     std::uint64_t seed = 1;
     std::string json = "-";
 };
-
-/// "X,Y,Z" -> vector; anything else is an error naming the option and the value.
-glm::dvec3 parseVector(const std::string& text, const char* option) {
-    glm::dvec3 v(0.0);
-    std::size_t start = 0;
-    for (int axis = 0; axis < 3; ++axis) {
-        const std::size_t end = axis < 2 ? text.find(',', start) : text.size();
-        bool ok = end != std::string::npos && end > start;
-        if (ok) {
-            const std::string field = text.substr(start, end - start);
-            char* parsedEnd = nullptr;
-            v[axis] = std::strtod(field.c_str(), &parsedEnd);
-            ok = parsedEnd == field.c_str() + field.size() && std::isfinite(v[axis]);
-        }
-        if (!ok) throw RadiantError({"", option}, "expected three numbers X,Y,Z, got '" + text + "'");
-        start = end + 1;
-    }
-    return v;
-}
 
 std::string formatValue(double value) {
     std::ostringstream out;
