@@ -23,7 +23,6 @@ ImportanceSolver::ImportanceSolver(const Scene& scene, const PatchMesh& mesh, co
     castEyeRays(scene, options.view ? *options.view : homeView(scene));  // homeView casts rays: only when needed
     setImportanceToEmission();
     afterSolutionMapped();
-    return true;
 }
 
 bool ImportanceSolver::setView(const Scene& scene, const View& view) {
@@ -37,6 +36,7 @@ bool ImportanceSolver::setView(const Scene& scene, const View& view) {
     // refine where the new view needs it and gather again.
     setImportanceToEmission();
     afterSolutionMapped();
+    return true;
 }
 
 namespace {
