@@ -72,7 +72,7 @@ render::Camera sceneCamera(const Scene& scene, const std::string& wanted) {
     camera.fieldOfView = Radians(found->verticalFieldOfView);
     // Far enough for every corner of the scene; the near plane stays the lab's 1 cm.
     glm::dvec3 lo, hi;
-    render::sceneBounds(scene, lo, hi);
+    sceneBounds(scene, lo, hi);
     double farthest = 0;
     for (int corner = 0; corner < 8; ++corner)
         farthest = std::max(farthest, glm::length(glm::dvec3(corner & 1 ? hi.x : lo.x, corner & 2 ? hi.y : lo.y,

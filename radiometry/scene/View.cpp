@@ -82,6 +82,17 @@ View insideView(const glm::dvec3& lo, const glm::dvec3& hi) {
 
 View homeView(const Scene& scene) {
     if (scene.name == "cornell-box") return cornellView();
+    // A glTF camera is where the scene's author meant it to be seen from.
+    if (!scene.cameras.empty() && scene.cameras.front().verticalFieldOfView > 0) {
+        const SceneCamera& camera = scene.cameras.front();
+        View view;
+        view.eye = camera.position;
+        view.target = camera.position + camera.forward;
+        view.up = camera.up;
+        view.verticalFov = camera.verticalFieldOfView;
+        if (camera.aspectRatio > 0) view.aspect = camera.aspectRatio;
+        return view;
+    }
     glm::dvec3 lo, hi;
     if (!sceneBounds(scene, lo, hi)) return cornellView();
     const View outside = framingView(lo, hi);

@@ -28,7 +28,8 @@ View framingView(const glm::dvec3& lo, const glm::dvec3& hi);
 /// Axis-aligned bounds of every face vertex (m); false (and lo > hi) for a scene without one.
 bool sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 
-/// The view a scene opens with: the Cornell camera for the Cornell box (its published camera),
+/// The view a scene opens with: the Cornell camera for the Cornell box (its published camera), the
+/// scene's first glTF camera where it has one,
 /// framingView of the bounds for anything else, or a wide view from inside the bounds when that
 /// sees more front faces (a closed room or furnace from outside shows only its walls' backs; two
 /// plates facing each other mostly theirs).
