@@ -125,7 +125,15 @@ void IntegralsPanel::draw() {
     ImGui::Text("integral of %s", integrandLabel(integrand_));
     ImGui::Text("N = %zu of %zu", run_->taken(), run_->total());
     ImGui::Text("estimate %.6f %s", e.value, unit);
-    if (run_->settings().method != IntegralMethod::Riemann) ImGui::SameLine(), ImGui::TextDisabled("+- %.2g", e.standardError);
+    if (infiniteVariance()) {
+        ImGui::TextDisabled("no error bar: infinite variance");
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Cosine-weighted samples of the plain solid angle weigh each direction by pi / cos theta:\n"
+                              "the estimate still converges to 2 pi, but its variance integral, pi times the\n"
+                              "integral of d omega / cos theta, diverges at the horizon, so s / sqrt(N) means nothing.");
+    } else if (run_->settings().method != IntegralMethod::Riemann) {
+        ImGui::SameLine(), ImGui::TextDisabled("+- %.2g", e.standardError);
+    }
     ImGui::Text("exact    %.6f %s%s", run_->exact(), unit,
                 integrand_ == HemisphereIntegrand::Irradiance ? " (hemicube sum B_j F_j)" : "");
     if (run_->taken() > 0) ImGui::Text("error    %.3g %s (%.3g %%)", e.value - run_->exact(), unit,
@@ -190,7 +198,7 @@ void IntegralsPanel::drawErrorPlot(float width, float height) const {
     const std::vector<ErrorPoint>& history = run_->errorHistory();
     const double scale = std::abs(run_->exact()) > 0 ? std::abs(run_->exact()) : 1.0;
     // The 1/sqrt(N) line through the latest Monte Carlo error estimate: s / sqrt(N) for every N.
-    if (!history.empty() && history.back().standardError > 0) {
+    if (!history.empty() && history.back().standardError > 0 && !infiniteVariance()) {
         const double sigma = history.back().standardError * std::sqrt(static_cast<double>(history.back().samples));
         draw->AddLine(toScreen(1, sigma / scale), toScreen(1e5, sigma / std::sqrt(1e5) / scale), kReference, 1.5f);
     }
@@ -208,7 +216,8 @@ void IntegralsPanel::drawErrorPlot(float width, float height) const {
         draw->AddCircleFilled(p, 2.5f, kRiemann);
     }
     ImGui::Dummy({width, height});
-    ImGui::TextDisabled("|error| / exact against N: this run (blue), grey s / sqrt(N)");
+    ImGui::TextDisabled(infiniteVariance() ? "|error| / exact against N: this run (blue)"
+                                           : "|error| / exact against N: this run (blue), grey s / sqrt(N)");
     if (!riemannSeries_.empty()) ImGui::TextDisabled("green: full Riemann sums on 1 .. 64 theta cells (~ 1/N)");
 }
 

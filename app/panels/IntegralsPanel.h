@@ -29,6 +29,11 @@ public:
     void select(HemisphereIntegrand integrand, const IntegralSettings& settings);
     void run(bool on) { running_ = on; }
     [[nodiscard]] bool busy() const override { return running_; }
+    /// Cosine-weighted Monte Carlo of the plain solid angle: the estimator pi / cos theta has no
+    /// finite variance, so no standard error is shown for it.
+    [[nodiscard]] bool infiniteVariance() const {
+        return integrand_ == HemisphereIntegrand::SolidAngle && settings_.method == IntegralMethod::CosineMonteCarlo;
+    }
     [[nodiscard]] const HemisphereIntegralRun& current() const { return *run_; }
     HemisphereIntegralRun& current() { return *run_; }
 
