@@ -19,18 +19,22 @@ void CameraController::update(render::OrbitCamera& camera, const render::Viewpor
         if (dragButton_ == 0 && !dragged_) click_ = pressedAt_;
         dragButton_ = -1;
     }
+    bool pressedNow = false;
     if (dragButton_ < 0 && overView && !io.WantCaptureMouse)
         for (int button = 0; button < 3; ++button)
             if (io.MouseClicked[button]) {
                 dragButton_ = button;
                 pressedAt_ = mouse;
                 dragged_ = false;
+                pressedNow = true;
             }
     // A hand on a projector clicker wobbles a few pixels; more than that is an orbit, not a pick.
     constexpr double kClickSlop = 4.0;
     if (dragButton_ == 0 && glm::length(mouse - pressedAt_) > kClickSlop) dragged_ = true;
 
-    if (dragButton_ >= 0) {
+    // The press frame's delta is how the pointer got to where it was pressed (a jump, when an idle
+    // lab drew no frame in between, or a touch screen's tap): not part of the drag.
+    if (dragButton_ >= 0 && !pressedNow) {
         const double dx = io.MouseDelta.x, dy = io.MouseDelta.y;
         const double height = static_cast<double>(view.height);
         if (dragButton_ == 0) {
