@@ -3,6 +3,8 @@
 #include <CLI/CLI.hpp>
 #include <cstdio>
 #include <exception>
+#include <fstream>
+#include <iostream>
 #include <memory>
 #include <string>
 
@@ -11,6 +13,17 @@
 #include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
+
+void writeText(const std::string& path, const std::string& text, const char* option) {
+    if (path == "-") {
+        std::cout << text << std::flush;
+        return;
+    }
+    std::ofstream out(path);
+    if (!out) throw RadiantError({path, option}, "cannot open for writing");
+    out << text;
+    if (!out) throw RadiantError({path, option}, "write failed");
+}
 
 Scene loadSceneArgument(const std::string& nameOrPath) {
     Scene scene = loadScene(nameOrPath).scene;

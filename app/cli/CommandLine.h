@@ -34,6 +34,10 @@ struct Subcommand {
 /// printed on stderr, one line each. Throws RadiantError as loadScene does.
 Scene loadSceneArgument(const std::string& nameOrPath);
 
+/// Writes `text` to `path`, or to standard output for "-"; a file that cannot be written is a
+/// RadiantError naming it and the option it came from.
+void writeText(const std::string& path, const std::string& text, const char* option);
+
 Subcommand addSolveCommand(CLI::App& root);
 Subcommand addProbeCommand(CLI::App& root);
 Subcommand addReferenceCommand(CLI::App& root);

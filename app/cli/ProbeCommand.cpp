@@ -123,15 +123,7 @@ int runProbe(const ProbeCommandOptions& options) {
                      {"unoccluded_form_factor", t.unoccludedFormFactor}};
     out["warnings"] = scene.warnings;
 
-    const std::string text = out.dump(2) + "\n";
-    if (options.json == "-") {
-        std::cout << text << std::flush;
-    } else {
-        std::ofstream file(options.json);
-        if (!file) throw RadiantError({options.json, "--json"}, "cannot open for writing");
-        file << text;
-        if (!file) throw RadiantError({options.json, "--json"}, "write failed");
-    }
+    writeText(options.json, out.dump(2) + "\n", "--json");
     return 0;
 }
 

@@ -86,15 +86,7 @@ int runReference(const ReferenceCommandOptions& options) {
     out["seed"] = options.seed;
     out["seconds"] = seconds;
 
-    const std::string text = out.dump(2) + "\n";
-    if (options.json == "-") {
-        std::cout << text << std::flush;
-    } else {
-        std::ofstream file(options.json);
-        if (!file) throw RadiantError({options.json, "--json"}, "cannot open for writing");
-        file << text;
-        if (!file) throw RadiantError({options.json, "--json"}, "write failed");
-    }
+    writeText(options.json, out.dump(2) + "\n", "--json");
     return 0;
 }
 

@@ -71,17 +71,6 @@ std::string csvField(const std::string& text) {
     return quoted + "\"";
 }
 
-void writeText(const std::string& path, const std::string& text, const char* option) {
-    if (path == "-") {
-        std::cout << text << std::flush;
-        return;
-    }
-    std::ofstream out(path);
-    if (!out) throw RadiantError({path, option}, "cannot open for writing");
-    out << text;
-    if (!out) throw RadiantError({path, option}, "write failed");
-}
-
 void checkPositive(double value, const char* option) {
     if (!(value > 0)) throw RadiantError({"", option}, "must be > 0, got " + std::to_string(value));
 }
