@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/scene/View.h"
 
 namespace radiant {
 namespace {
@@ -36,16 +37,8 @@ double distanceOutside(const Face& face, const glm::dvec3& x) {
 }
 
 double sceneDiagonal(const Scene& scene) {
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
-    bool any = false;
-    for (const Surface& surface : scene.surfaces)
-        for (const Face& face : surface.faces)
-            for (const glm::dvec3& v : face.vertices) {
-                lo = glm::min(lo, v);
-                hi = glm::max(hi, v);
-                any = true;
-            }
-    return any ? std::max(glm::length(hi - lo), 1e-9) : 1.0;
+    glm::dvec3 lo, hi;
+    return sceneBounds(scene, lo, hi) ? std::max(glm::length(hi - lo), 1e-9) : 1.0;
 }
 
 } // namespace
