@@ -1,5 +1,9 @@
 #include "radiometry/solver/SolverMethods.h"
 
+#include <algorithm>
+#include <vector>
+
+#include "radiometry/common/Check.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/SolverFactories.h"
 
@@ -15,7 +19,7 @@ constexpr std::string_view kUnshot = "unshot power / emitted power (max over ban
 constexpr std::string_view kSweepChange =
     "change in the last sweep: max over bands of sum over leaves A |B_new - B_old| / sum A E";
 
-constexpr SolverMethodInfo kMethods[] = {
+constexpr SolverMethodInfo kBuiltinMethods[] = {
     {SolverMethod::Jacobi, "jacobi", "Jacobi", kMatrixResidual, {.formFactorMatrix = true}, makeJacobiSolver},
     {SolverMethod::GaussSeidel, "gauss-seidel", "Gauss-Seidel", kMatrixResidual, {.formFactorMatrix = true},
      makeGaussSeidelSolver},
@@ -27,22 +31,43 @@ constexpr SolverMethodInfo kMethods[] = {
      {.links = true, .viewDependent = true}, makeImportanceSolver},
 };
 
+std::vector<SolverMethodInfo>& methodTable() {
+    static std::vector<SolverMethodInfo> table(std::begin(kBuiltinMethods), std::end(kBuiltinMethods));
+    return table;
+}
+
 } // namespace
 
-std::span<const SolverMethodInfo> solverMethods() { return kMethods; }
+std::span<const SolverMethodInfo> solverMethods() { return methodTable(); }
+
+SolverMethodRegistration registerSolverMethod(const SolverMethodInfo& info) {
+    std::vector<SolverMethodInfo>& table = methodTable();
+    for (const SolverMethodInfo& known : table) {
+        RADIANT_CHECK_NE(static_cast<int>(known.method), static_cast<int>(info.method));
+        RADIANT_CHECK_NE(known.name, info.name);
+    }
+    RADIANT_CHECK_NE(info.factory, nullptr);
+    table.push_back(info);
+    return SolverMethodRegistration(info.method);
+}
+
+SolverMethodRegistration::~SolverMethodRegistration() {
+    if (!live_) return;
+    std::erase_if(methodTable(), [this](const SolverMethodInfo& info) { return info.method == method_; });
+}
 
 const SolverMethodInfo& methodInfo(SolverMethod method) {
-    for (const SolverMethodInfo& info : kMethods)
+    for (const SolverMethodInfo& info : methodTable())
         if (info.method == method) return info;
     throw RadiantError({"solver", "method"}, "method " + std::to_string(static_cast<int>(method)) + " is not in the table");
 }
 
 std::string methodNameList() {
     std::string list;
-    const std::size_t count = std::size(kMethods);
-    for (std::size_t i = 0; i < count; ++i) {
-        if (i > 0) list += i + 1 == count ? " or " : ", ";
-        list += kMethods[i].name;
+    const std::span<const SolverMethodInfo> methods = solverMethods();
+    for (std::size_t i = 0; i < methods.size(); ++i) {
+        if (i > 0) list += i + 1 == methods.size() ? " or " : ", ";
+        list += methods[i].name;
     }
     return list;
 }
@@ -50,7 +75,7 @@ std::string methodNameList() {
 std::string_view methodName(SolverMethod method) { return methodInfo(method).name; }
 
 SolverMethod parseMethod(std::string_view name) {
-    for (const SolverMethodInfo& info : kMethods)
+    for (const SolverMethodInfo& info : methodTable())
         if (info.name == name) return info.method;
     throw RadiantError({"", "method"}, "unknown method '" + std::string(name) + "' (expected " + methodNameList() + ")");
 }
