@@ -16,7 +16,7 @@ struct View {
     double aspect = 1.0;       ///< image width / height
 };
 
-/// The Cornell Program of Computer Graphics' camera (oracles.md): eye (0.278, 0.273, -0.8) m
+/// The Cornell Program of Computer Graphics' camera (docs/reference.md): eye (0.278, 0.273, -0.8) m
 /// looking along +z, up +y, a 35 mm lens on 25 mm film: field of view 2 atan(12.5 / 35).
 View cornellView();
 

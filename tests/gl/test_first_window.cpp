@@ -1,6 +1,6 @@
 // The first window, driven frame by frame under Xvfb: the Cornell box must appear where the
 // Cornell camera puts it. Expected pixel positions come from projecting known wall points
-// (oracles.md's measured box, in metres) with the camera the lab reports.
+// (docs/reference.md's measured box, in metres) with the camera the lab reports.
 #include <doctest/doctest.h>
 
 #include <algorithm>

@@ -1,5 +1,5 @@
 // The GPU hemicube (Cohen & Greenberg 1985) against exact routes: Lambert's point-to-polygon form
-// factor with ray-cast visibility (the probe), oracles.md's closed form for a differential area under
+// factor with ray-cast visibility (the probe), docs/reference.md's closed form for a differential area under
 // a parallel rectangle, the probe's gathered irradiance, and the Nusselt analog's covered area.
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 // Scenes as Blender's glTF exporter writes them (tests/data/make_blender_scenes.py): double-sided
-// materials against the parallel-plates closed form and a closed room's energy balance (oracles.md),
+// materials against the parallel-plates closed form and a closed room's energy balance (docs/reference.md),
 // punctual lamps refused with a warning, a missing texture, a camera, and names of multi-material
 // objects. The command line is run for what only it does (warnings on stderr and in the JSON).
 #include <doctest/doctest.h>
@@ -42,7 +42,7 @@ bool anyContains(const std::vector<std::string>& lines, const std::string& part)
     return false;
 }
 
-/// Directly opposed parallel rectangles a x b at distance c (oracles.md, Howell).
+/// Directly opposed parallel rectangles a x b at distance c (docs/reference.md, Howell).
 double parallelRectangles(double a, double b, double c) {
     const double X = a / c, Y = b / c;
     return 2 / (std::numbers::pi * X * Y) *
@@ -147,7 +147,7 @@ TEST_CASE("Blender's default plane facing up, double-sided, lights the floor bel
 }
 
 TEST_CASE("a room made of Blender's cube (normals outward), double-sided, is lit inside and balances") {
-    // Closed enclosure of uniform reflectance 0.5 (oracles.md): (1 - rho) sum A B = sum A E over the
+    // Closed enclosure of uniform reflectance 0.5 (docs/reference.md): (1 - rho) sum A B = sum A E over the
     // inside; the lamp (0.5 m x 0.5 m, 10 W/m^2 from each side) emits 5 W.
     const Solved solved = solve("cube_room.gltf", 0.1);
     CHECK(solved.scene.doubleSidedSurfaceCount() == 2);

@@ -1,5 +1,5 @@
 // ctest-labels: threads
-// Form factors against closed forms from Howell's catalog and the lecture (docs: oracles.md),
+// Form factors against closed forms from Howell's catalog and the lecture (docs/reference.md),
 // computed here from the formulas, for several dimensions each.
 #include <doctest/doctest.h>
 

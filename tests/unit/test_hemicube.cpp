@@ -1,6 +1,6 @@
 // The hemicube (Cohen & Greenberg 1985) without GL: delta form factors against their closed forms
 // and the hemisphere's integrals, and the hemicube's form factors (item buffer by ray casting)
-// against oracles.md's closed forms for a differential area under a parallel rectangle:
+// against docs/reference.md's closed forms for a differential area under a parallel rectangle:
 //   F = 1/(2 pi) [A/sqrt(1+A^2) atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))],
 // and Omega = atan(ab / (h sqrt(a^2+b^2+h^2))) for the corner rectangle's solid angle.
 #include <doctest/doctest.h>
@@ -251,7 +251,7 @@ TEST_CASE("Monte Carlo error of the integrals shrinks as 1/sqrt(N), cosine sampl
     CHECK(uniform.estimate().value == relativeTo(2 * kPi, 1e-12));  // constant f / uniform pdf
 }
 
-TEST_CASE("lecture demos' numbers match oracles.md") {
+TEST_CASE("lecture demos' numbers match the closed forms of docs/reference.md") {
     using namespace app;
     // Point source: E = P cos(theta) / (4 pi r^2), r^2 = h^2 + x^2, cos = h / r.
     for (const double h : {0.5, 1.0, 3.0})

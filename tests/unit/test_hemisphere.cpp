@@ -1,5 +1,5 @@
 // Hemispherical coordinates and the three ways to integrate over the hemisphere, checked against
-// integral d omega = 2 pi, integral cos(theta) d omega = pi (oracles.md) and
+// integral d omega = 2 pi, integral cos(theta) d omega = pi (docs/reference.md) and
 // integral cos^2(theta) d omega = 2 pi / 3 (2 pi times integral_0^1 mu^2 d mu).
 #include <doctest/doctest.h>
 

@@ -1,5 +1,5 @@
 // ctest-labels: threads
-// Hierarchical and importance-driven radiosity against closed forms (reference/oracles.md): the
+// Hierarchical and importance-driven radiosity against closed forms (docs/reference.md): the
 // furnace, two parallel plates, energy balance in a closed box, the adjoint identity. Expected
 // values are computed here from the formulas, never taken from the solver.
 #include <doctest/doctest.h>

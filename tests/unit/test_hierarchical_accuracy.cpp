@@ -1,4 +1,4 @@
-// Hierarchical radiosity's error control against closed forms (reference/oracles.md): the visibility
+// Hierarchical radiosity's error control against closed forms (docs/reference.md): the visibility
 // estimate of a link is unbiased for a pair whose visible fraction is known by symmetry, the value at
 // a point (the links' gather) is the differential-area-to-rectangle form factor, and the furnace's
 // every leaf is near E / (1 - rho). Tolerances are relative (.scale(0)).

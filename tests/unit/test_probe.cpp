@@ -1,5 +1,5 @@
 // ctest-labels: threads
-// The point probe on scenes built in code, against closed forms (oracles.md): the differential
+// The point probe on scenes built in code, against closed forms (docs/reference.md): the differential
 // area to a parallel rectangle with its corner on the normal, F = 1/(2 pi) [A/sqrt(1+A^2)
 // atan(B/sqrt(1+A^2)) + B/sqrt(1+B^2) atan(A/sqrt(1+B^2))], and the corner-rectangle solid angle
 // atan(ab / (h sqrt(a^2+b^2+h^2))). Any rectangle over a point splits into signed corner rectangles.
@@ -26,30 +26,16 @@
 #include "radiometry/probe/Probe.h"
 #include "radiometry/probe/RadiosityInterpolation.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "tests/support/CatalogViewFactors.h"
 
 using namespace radiant;
 
 namespace {
 constexpr double kPi = std::numbers::pi;
 
-double cornerFormFactor(double a, double b, double c) {
-    const double A = a / c, B = b / c;
-    return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
-            B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
-           (2 * kPi);
-}
-double cornerSolidAngle(double a, double b, double h) { return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h))); }
-
-/// A quantity of the rectangle [x0, x1] x [y0, y1] at height h seen from the origin, from the
-/// corner-rectangle formula g(a, b, h) by inclusion-exclusion (signed extents).
-template <class CornerFormula>
-double rectangleFromCorners(CornerFormula g, double x0, double x1, double y0, double y1, double h) {
-    const auto signedCorner = [&](double x, double y) {
-        const double value = g(std::abs(x), std::abs(y), h);
-        return (x < 0) != (y < 0) ? -value : value;
-    };
-    return signedCorner(x1, y1) - signedCorner(x0, y1) - signedCorner(x1, y0) + signedCorner(x0, y0);
-}
+using test::cornerRectangleSolidAngle;
+using test::overRectangle;
+using test::pointToCornerRectangle;
 
 Face rectangleFace(std::array<glm::dvec3, 4> corners) {
     Face face;
@@ -107,13 +93,13 @@ TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner
             const RayCaster rays(scene);
             const Probe probe(scene, mesh, &rays);
             const ProbeReading r = probe.measure(x, {0, 0, 1}, emitterOnly(mesh, 1), std::size_t{1});
-            const double expectedF = rectangleFromCorners(cornerFormFactor, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
+            const double expectedF = overRectangle(pointToCornerRectangle, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
                                                           0.5 - x.y, h);
-            const double expectedOmega = rectangleFromCorners(cornerSolidAngle, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
+            const double expectedOmega = overRectangle(cornerRectangleSolidAngle, -0.5 - x.x, 0.5 - x.x, -0.5 - x.y,
                                                               0.5 - x.y, h);
             if (x == glm::dvec3(0.0)) {  // the centre: four equal 0.5 x 0.5 corner rectangles
-                CHECK(expectedF == doctest::Approx(4 * cornerFormFactor(0.5, 0.5, h)).epsilon(1e-14).scale(0));
-                CHECK(expectedOmega == doctest::Approx(4 * cornerSolidAngle(0.5, 0.5, h)).epsilon(1e-14).scale(0));
+                CHECK(expectedF == doctest::Approx(4 * pointToCornerRectangle(0.5, 0.5, h)).epsilon(1e-14).scale(0));
+                CHECK(expectedOmega == doctest::Approx(4 * cornerRectangleSolidAngle(0.5, 0.5, h)).epsilon(1e-14).scale(0));
             }
             REQUIRE(r.target);
             CHECK(r.target->name == "emitter");
@@ -154,8 +140,8 @@ TEST_CASE("a closed block counts its silhouette once, and a target seen from beh
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
     const std::vector<Rgb> dark(mesh.size(), Rgb(0.0));
-    const double silhouetteOmega = 4 * cornerSolidAngle(a, a, h);
-    const double silhouetteF = 4 * cornerFormFactor(a, a, h);
+    const double silhouetteOmega = 4 * cornerRectangleSolidAngle(a, a, h);
+    const double silhouetteF = 4 * pointToCornerRectangle(a, a, h);
     // From the origin the block's bottom face is its whole silhouette.
     const ProbeReading r = probe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), dark, std::size_t{1});
     REQUIRE(r.target);
@@ -194,9 +180,9 @@ TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
             const RayCaster rays(scene);
             const Probe probe(scene, mesh, &rays);
             const ProbeReading r = probe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), emitterOnly(mesh, 1), std::size_t{1});
-            const double visibleF = rectangleFromCorners(cornerFormFactor, 2 * e, 0.5, -0.5, 0.5, h);
-            const double visibleOmega = rectangleFromCorners(cornerSolidAngle, 2 * e, 0.5, -0.5, 0.5, h);
-            const double fullF = 4 * cornerFormFactor(0.5, 0.5, h);
+            const double visibleF = overRectangle(pointToCornerRectangle, 2 * e, 0.5, -0.5, 0.5, h);
+            const double visibleOmega = overRectangle(cornerRectangleSolidAngle, 2 * e, 0.5, -0.5, 0.5, h);
+            const double fullF = 4 * pointToCornerRectangle(0.5, 0.5, h);
             REQUIRE(r.target);
             CHECK(r.target->unoccludedFormFactor == doctest::Approx(fullF).epsilon(1e-9).scale(0));
             CHECK(r.target->formFactor == doctest::Approx(visibleF).epsilon(5e-4).scale(0));
@@ -276,8 +262,8 @@ TEST_CASE("radiant probe on the built-in parallel plates prints the closed forms
     std::ifstream in(output);
     const nlohmann::json j = nlohmann::json::parse(in);
     std::remove(output.c_str());
-    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);
-    const double omega = 4 * cornerSolidAngle(0.5, 0.5, 1.0);
+    const double F = 4 * pointToCornerRectangle(0.5, 0.5, 1.0);
+    const double omega = 4 * cornerRectangleSolidAngle(0.5, 0.5, 1.0);
     CHECK(j["surface"] == "receiver");
     CHECK(j["target"]["name"] == "emitter");
     CHECK(std::abs(j["target"]["form_factor"].get<double>() - F) < 1e-4);

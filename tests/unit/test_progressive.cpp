@@ -1,5 +1,5 @@
 // Progressive refinement with block shooters (Cohen, Greenberg, Immel, Brock 1986): the grouping
-// itself, the group form factors against the box closed forms (oracles.md), the furnace before
+// itself, the group form factors against the box closed forms (docs/reference.md), the furnace before
 // and after a material edit, agreement with Gauss-Seidel on the Cornell box, determinism, and the
 // persistent worker pool under parallelFor.
 #include <doctest/doctest.h>

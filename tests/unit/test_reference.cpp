@@ -1,5 +1,5 @@
 // ctest-labels: threads
-// The path-traced reference (radiometry/reference/) against closed forms from oracles.md: the
+// The path-traced reference (radiometry/reference/) against closed forms from docs/reference.md: the
 // furnace (B = E / (1 - rho) everywhere), direct light between parallel opposed rectangles (the
 // differential-area-to-rectangle form factor, four corner rectangles summed), energy balance in a
 // closed box ((1 - rho) sum A B = sum A M), and a converged Gauss-Seidel solve on fine meshes. Every
@@ -33,6 +33,7 @@
 #include "radiometry/reference/ReferencePoint.h"
 #include "radiometry/reference/ReferenceRun.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "tests/support/CatalogViewFactors.h"
 #include "radiometry/solver/Solver.h"
 
 using namespace radiant;
@@ -41,22 +42,11 @@ namespace {
 
 constexpr double kPi = std::numbers::pi;
 
-/// Differential area to a parallel a x b rectangle whose corner lies on its normal at distance c.
-double cornerFormFactor(double a, double b, double c) {
-    const double A = a / c, B = b / c;
-    return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
-            B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
-           (2 * kPi);
-}
+using test::pointToCornerRectangle;
 
-/// The same for the rectangle [x0, x1] x [y0, y1] at distance c from a point at the origin, by
-/// inclusion-exclusion over signed corner rectangles.
+/// The point-to-rectangle form factor of [x0, x1] x [y0, y1] at distance c.
 double rectangleFormFactor(double x0, double x1, double y0, double y1, double c) {
-    const auto signedCorner = [&](double x, double y) {
-        const double value = cornerFormFactor(std::abs(x), std::abs(y), c);
-        return (x < 0) != (y < 0) ? -value : value;
-    };
-    return signedCorner(x1, y1) - signedCorner(x0, y1) - signedCorner(x1, y0) + signedCorner(x0, y0);
+    return test::overRectangle(pointToCornerRectangle, x0, x1, y0, y1, c);
 }
 
 Face quad(std::vector<glm::dvec3> corners) {
@@ -319,7 +309,7 @@ TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and 
     CHECK_FALSE(done.refining);
     CHECK(done.error.empty());
     CHECK(done.estimate->relativeStandardError() <= app::PathTracedReading::kTargetRelativeError);
-    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);  // the built-in emitter's exitance is 1 W/m^2
+    const double F = 4 * pointToCornerRectangle(0.5, 0.5, 1.0);  // the built-in emitter's exitance is 1 W/m^2
     for (int band = 0; band < 3; ++band)
         checkWithin(done.estimate->irradiance.value()[band], done.estimate->irradianceStandardError[band], F, 4, 0.001);
 
@@ -346,7 +336,7 @@ TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with
     std::ifstream in(output);
     const nlohmann::json j = nlohmann::json::parse(in);
     std::remove(output.c_str());
-    const double F = 4 * cornerFormFactor(0.5, 0.5, 1.0);
+    const double F = 4 * pointToCornerRectangle(0.5, 0.5, 1.0);
     CHECK(j["surface"] == "receiver");
     CHECK(j["samples"] == 200000);
     for (int band = 0; band < 3; ++band) {

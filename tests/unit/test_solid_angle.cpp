@@ -1,4 +1,4 @@
-// The exact polygon solid angle (Van Oosterom & Strackee) against the closed forms of oracles.md:
+// The exact polygon solid angle (Van Oosterom & Strackee) against the closed forms of docs/reference.md:
 // the corner rectangle atan(ab / (h sqrt(a^2 + b^2 + h^2))), the cap 2 pi (1 - cos alpha), and the
 // faces of a regular dodecahedron (4 pi / 12 each).
 #include <doctest/doctest.h>

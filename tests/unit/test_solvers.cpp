@@ -1,5 +1,5 @@
 // ctest-labels: threads
-// The gathering and shooting solvers against closed forms (oracles.md): the furnace, Jacobi's
+// The gathering and shooting solvers against closed forms (docs/reference.md): the furnace, Jacobi's
 // iterates, two-patch exchange, energy balance. Meshes here are built by hand with form factors
 // from the published closed forms, so the solvers are tested independently of the kernel.
 #include <doctest/doctest.h>

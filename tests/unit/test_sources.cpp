@@ -1,5 +1,5 @@
 // Point sources, diffuse emitters, distant sources and the lecture's Sun example, against the
-// lecture's numbers and closed forms from oracles.md.
+// lecture's numbers and closed forms from docs/reference.md.
 #include <doctest/doctest.h>
 
 #include <cmath>

@@ -2,7 +2,7 @@
 // The radiometry lecture's demos (K. Bala, "Radiometry and Rendering Equation", Cornell 2004), one
 // panel each, one file each: sliders, the live numbers with their units, and the formula behind them.
 // Each demo's numbers come from a plain function of its settings (radiometry/ does the physics), so
-// the tests check them against oracles.md's closed forms.
+// the tests check them against docs/reference.md's closed forms.
 #include <vector>
 
 #include "app/panels/Panel.h"
