@@ -38,7 +38,7 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     root.add_option("scene", *scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
 
     const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addReferenceCommand(root),
-                                   addRenderCommand(root), addBenchCommand(root)};
+                                   addRenderCommand(root), addBenchCommand(root), addLessonCommand(root)};
     try {
         root.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

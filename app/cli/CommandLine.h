@@ -43,5 +43,6 @@ Subcommand addProbeCommand(CLI::App& root);
 Subcommand addReferenceCommand(CLI::App& root);
 Subcommand addRenderCommand(CLI::App& root);
 Subcommand addBenchCommand(CLI::App& root);
+Subcommand addLessonCommand(CLI::App& root);
 
 } // namespace radiant::app
