@@ -34,8 +34,9 @@ install(FILES ${RADIANT_BASH_COMPLETION} DESTINATION ${RADIANT_INSTALL_DATADIR}/
 
 # The Debian package. Its version is project(VERSION), which `radiant --version` prints too; its
 # dependencies are read from the program's shared libraries by dpkg-shlibdeps (package dpkg-dev),
-# plus the Mesa drivers libGL and libEGL load at run time, which no ELF header names: without them a
-# machine with no GPU driver installed has no llvmpipe and the lab cannot open a window.
+# plus what is loaded at run time, which no ELF header names: libGL, which libepoxy and GLFW open for
+# the window's GLX context, and Mesa's drivers behind libGL and libEGL (without them a machine with
+# no GPU driver has no llvmpipe, and neither the lab nor `radiant render` can draw).
 set(CPACK_GENERATOR DEB)
 set(CPACK_PACKAGE_NAME radiant)
 set(CPACK_PACKAGE_VERSION ${PROJECT_VERSION})
@@ -52,7 +53,7 @@ set(CPACK_DEBIAN_FILE_NAME DEB-DEFAULT)
 set(CPACK_DEBIAN_PACKAGE_SECTION science)
 set(CPACK_DEBIAN_PACKAGE_PRIORITY optional)
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "libgl1-mesa-dri, libegl-mesa0")
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "libgl1, libgl1-mesa-dri, libegl-mesa0")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)
 include(CPack)
 
