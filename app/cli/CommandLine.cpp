@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/LabApp.h"
+#include "generated/Version.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
 
@@ -34,6 +35,7 @@ Scene loadSceneArgument(const std::string& nameOrPath) {
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     CLI::App root{"Radiant: an interactive lab for radiometry and radiosity", "radiant"};
     root.require_subcommand(0, 1);
+    root.set_version_flag("--version", std::string("radiant ") + kRadiantVersion);
     auto scene = std::make_shared<std::string>("cornell-box");
     root.add_option("scene", *scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
 
@@ -44,6 +46,8 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     } catch (const CLI::CallForHelp& e) {
         return {{}, root.exit(e)};
     } catch (const CLI::CallForAllHelp& e) {
+        return {{}, root.exit(e)};
+    } catch (const CLI::CallForVersion& e) {
         return {{}, root.exit(e)};
     } catch (const CLI::ParseError& e) {
         std::fprintf(stderr, "radiant: %s (see radiant --help)\n", e.what());

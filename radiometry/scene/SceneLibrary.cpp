@@ -8,20 +8,6 @@
 
 namespace radiant {
 
-std::string assetDirectory() {
-    namespace fs = std::filesystem;
-    std::error_code ec;
-#ifdef RADIANT_ASSET_DIR
-    if (fs::is_directory(RADIANT_ASSET_DIR, ec)) return RADIANT_ASSET_DIR;
-#endif
-    const fs::path executable = fs::read_symlink("/proc/self/exe", ec);
-    if (!ec) {
-        const fs::path installed = executable.parent_path() / ".." / "share" / "radiant" / "assets";
-        if (fs::is_directory(installed, ec)) return fs::weakly_canonical(installed, ec).string();
-    }
-    return {};
-}
-
 namespace {
 
 /// Every command and the lab solve what they load, and a scene without a source solves to zero
@@ -48,7 +34,7 @@ LoadedScene loadScene(const std::string& nameOrPath, const SceneLoadOptions& opt
     const std::string directory = assetDirectory();
     if (directory.empty())
         throw RadiantError({nameOrPath, ""}, "the built-in scenes' folder was not found (looked in " +
-                                                 std::string(RADIANT_ASSET_DIR) + " and ../share/radiant/assets beside the program)");
+                                                 assetDirectoryCandidates() + ")");
     LoadedScene loaded = loadGltf((std::filesystem::path(directory) / (nameOrPath + ".gltf")).string(), options);
     loaded.scene.name = nameOrPath;
     return requireEmitter(std::move(loaded));

@@ -4,16 +4,13 @@
 #include <string>
 #include <vector>
 
+#include "radiometry/scene/AssetDirectory.h"
 #include "radiometry/scene/GltfLoader.h"
 
 namespace radiant {
 
 /// Names of the built-in scenes, "cornell-box" first (same list as BuiltinScenes.h).
 std::vector<std::string> builtinSceneNames();
-
-/// The folder holding the built-in scenes' .gltf files: RADIANT_ASSET_DIR (a source checkout) when
-/// it exists, else ../share/radiant/assets beside the running executable. Empty when neither exists.
-std::string assetDirectory();
 
 /// Loads a scene. A built-in name loads <assetDirectory()>/<name>.gltf (the same file any glTF
 /// viewer opens) and keeps the name as Scene::name; anything else is a path to a glTF file.
