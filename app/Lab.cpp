@@ -8,12 +8,15 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <numbers>
 #include <optional>
 
 #include "app/panels/DisplayPanel.h"
 #include "app/panels/HemicubeSession.h"
 #include "app/panels/HemispherePanel.h"
+#include "app/lessons/Lesson.h"
 #include "app/panels/InfoPanel.h"
+#include "app/panels/LessonsPanel.h"
 #include "app/panels/IntegralsPanel.h"
 #include "app/panels/demos/LectureDemosPanel.h"
 #include "app/panels/MaterialsPanel.h"
@@ -33,6 +36,7 @@
 #include "app/window/PickRay.h"
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/probe/Probe.h"
 #include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/scene/View.h"
 #include "render/OffscreenRender.h"
@@ -79,7 +83,8 @@ struct Lab::State {
           gl(render::queryGlInfo()),
           orbit(orbitFromHome(*initialScene)),
           panelsVisible(options.showPanels),
-          live(solverThread) {
+          live(solverThread),
+          patchArea(options.maxPatchArea) {
         display.uiScale = options.uiScale;
         // Our callbacks first: ImGui's backend installs its own and chains to these.
         glfwSetWindowUserPointer(window.handle(), this);
@@ -123,7 +128,17 @@ struct Lab::State {
         hemispherePanel = hemisphere.get();
         sidebar.add(std::move(hemisphere));
         sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
-        sidebar.add(std::make_unique<LectureDemosPanel>());
+        auto demos = std::make_unique<LectureDemosPanel>();
+        demosPanel = demos.get();
+        sidebar.add(std::move(demos));
+        sidebar.add(std::make_unique<LessonsPanel>(lessons, [this](const std::string& file) -> std::string {
+            try {
+                openLesson(file);
+                return "";
+            } catch (const RadiantError& error) {
+                return error.what();
+            }
+        }));
 
         live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
         if (options.runOnStart) live.send(command::Run{});
@@ -152,6 +167,8 @@ struct Lab::State {
         case LabAction::HomeView: orbit.reset(); break;
         case LabAction::TogglePanels: panelsVisible = !panelsVisible; break;
         case LabAction::Dome: hemispherePanel->setOverlayShown(!hemispherePanel->overlayShown()); break;
+        case LabAction::NextLessonStep: lessons.next(); break;
+        case LabAction::PreviousLessonStep: lessons.previous(); break;
         case LabAction::Screenshot: screenshotRequested = true; break;
         }
     }
@@ -271,6 +288,10 @@ struct Lab::State {
         stream();
         if (display.uiScale > 0 && display.uiScale != ui->uiScale()) ui->setUiScale(display.uiScale);
         sidebar.update();
+        if (std::optional<std::string> refused = lessons.update(stage)) {
+            lessonError = *refused;
+            message = *refused;
+        }
         ui->newFrame();
         int width = 0, height = 0;
         window.framebufferSize(width, height);
@@ -289,6 +310,7 @@ struct Lab::State {
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
+        drawLessonCaption(viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
@@ -324,6 +346,111 @@ struct Lab::State {
         viewSent = view;
     }
 
+    void openLesson(const std::string& file) {
+        lessons.open(lesson::readLesson(file));  // reads and checks it all first: a bad file changes nothing
+        lessonError.clear();
+    }
+
+    /// The step's title and caption, large, in the 3D view's lower left corner: what the lecturer
+    /// talks about, readable from the back of the room.
+    void drawLessonCaption(const render::Viewport& view) const {
+        if (!lessons.isOpen()) return;
+        const lesson::LessonStep& step = lessons.lesson().steps[lessons.step()];
+        const float margin = ImGui::GetFontSize();
+        const float width = std::max(12 * margin, std::min(0.7f * static_cast<float>(view.width), 40 * margin));
+        ImGui::SetNextWindowPos({static_cast<float>(view.x) + margin, static_cast<float>(view.y + view.height) - 2.5f * margin},
+                                ImGuiCond_Always, {0.0f, 1.0f});
+        ImGui::SetNextWindowSizeConstraints({0, 0}, {width, static_cast<float>(view.height) * 0.6f});
+        ImGui::SetNextWindowBgAlpha(0.72f);
+        ImGui::Begin("##lesson caption", nullptr,
+                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
+                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
+        ImGui::SetWindowFontScale(1.35f);
+        ImGui::PushTextWrapPos(width - margin);
+        ImGui::TextUnformatted(step.title.c_str());
+        ImGui::SetWindowFontScale(1.15f);
+        ImGui::TextUnformatted(step.caption.c_str());
+        ImGui::SetWindowFontScale(0.9f);
+        ImGui::TextDisabled("%s - step %zu of %zu - Page Down: next, Page Up: back", lessons.lesson().title.c_str(),
+                            lessons.step() + 1, lessons.stepCount());
+        ImGui::PopTextWrapPos();
+        ImGui::End();
+    }
+
+    /// What a lesson acts on: the lab's solver thread, camera, panels and display.
+    struct Stage final : LessonStage {
+        explicit Stage(State& owner) : lab(owner) {}
+        void loadScene(const std::string& nameOrPath) override {
+            scene = openScene(nameOrPath);
+            awaitedAfter = lab.live.snapshot().meshGeneration;
+            lab.live.send(command::LoadScene{scene, MeshingOptions{lab.patchArea}});
+        }
+        void remesh(double maxPatchAreaM2) override {
+            lab.patchArea = maxPatchAreaM2;
+            awaitedAfter = lab.live.snapshot().meshGeneration;
+            lab.live.send(command::Remesh{MeshingOptions{maxPatchAreaM2}});
+        }
+        [[nodiscard]] bool sceneReady() const override {
+            const Snapshot& s = lab.live.snapshot();
+            return s.scene && s.mesh && s.meshGeneration > awaitedAfter && (!scene || s.scene->name == scene->name);
+        }
+        void openDemo(const std::string& id) override {
+            const std::vector<std::string>& ids = lesson::demoIds();
+            const auto found = std::find(ids.begin(), ids.end(), id);
+            lab.demosPanel->focus(static_cast<std::size_t>(found - ids.begin()));
+            lab.sidebar.focus("Lecture demos");
+        }
+        void send(SolverCommand command) override { lab.live.send(std::move(command)); }
+        void setMaterial(const lesson::SetMaterial& edit) override {
+            const Scene& shown = *lab.live.snapshot().scene;
+            const std::size_t surface = shown.findSurface(edit.surface);
+            if (surface == Scene::npos)
+                throw RadiantError({shown.name, "material"}, "no surface '" + edit.surface + "' in the scene shown");
+            const Material& material = shown.materials[shown.surfaces[surface].material];
+            const auto rgb = [](const lesson::Triple& t) { return Rgb(t[0], t[1], t[2]); };
+            const std::string refused =
+                MaterialsPanel::submit(lab.live, surface, edit.reflectance ? rgb(*edit.reflectance) : material.reflectance,
+                                       edit.exitanceW_m2 ? rgb(*edit.exitanceW_m2) : material.exitance.value());
+            if (!refused.empty()) throw RadiantError({shown.name, "material '" + edit.surface + "'"}, refused);
+        }
+        void placeCamera(const lesson::PlaceCamera& place) override {
+            if (place.home) {
+                lab.orbit = orbitFromHome(*lab.live.snapshot().scene);
+                return;
+            }
+            render::Camera camera;
+            camera.eye = {place.eye[0], place.eye[1], place.eye[2]};
+            const glm::dvec3 target{place.target[0], place.target[1], place.target[2]};
+            camera.forward = glm::normalize(target - camera.eye);
+            camera.fieldOfView = Radians(place.fieldOfViewDegrees * std::numbers::pi / 180.0);
+            lab.orbit = render::OrbitCamera(camera, target);
+        }
+        bool probe(const lesson::Probe& at) override {
+            const glm::dvec3 point{at.point[0], at.point[1], at.point[2]};
+            std::vector<glm::dvec3> normals;
+            if (at.normal) normals.push_back(glm::normalize(glm::dvec3{(*at.normal)[0], (*at.normal)[1], (*at.normal)[2]}));
+            else normals = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+            // A short ray onto the point from its front: the same pick a click there makes.
+            for (const glm::dvec3& n : normals) {
+                if (!lab.probePanel->pick(point + 0.01 * n, -n)) continue;
+                const std::optional<ProbePick>& pick = lab.probePanel->picked();
+                if (!pick || glm::length(pick->point - point) > 1e-3) continue;
+                if (at.target) {
+                    const std::size_t target = lab.live.snapshot().scene->findSurface(*at.target);
+                    if (target != Scene::npos) lab.probePanel->setTarget(target);
+                }
+                return true;
+            }
+            return false;
+        }
+        void openPanel(const std::string& title) override { lab.sidebar.focus(title); }
+        render::DisplaySettings& display() override { return lab.display; }
+
+        State& lab;
+        std::shared_ptr<const Scene> scene;  ///< the scene the lesson loaded last
+        std::uint64_t awaitedAfter = 0;      ///< the mesh generation shown when the lesson asked for a new one
+    };
+
     void saveScreenshot(const render::ImageRgb8& image) {
         screenshotRequested = false;
         try {
@@ -349,6 +476,11 @@ struct Lab::State {
     ScenePanel* scenePanel = nullptr;  // owned by the sidebar
     ProbePanel* probePanel = nullptr;  // owned by the sidebar
     HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
+    LectureDemosPanel* demosPanel = nullptr;  // owned by the sidebar
+    double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with
+    LessonPlayer lessons;
+    Stage stage{*this};
+    std::string lessonError;
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;
@@ -416,5 +548,9 @@ std::string Lab::editMaterial(std::size_t surface, const Rgb& reflectance, const
 render::DisplaySettings& Lab::display() { return state_->display; }
 std::string Lab::statusMessage() const { return state_->message; }
 void Lab::focusPanel(const std::string& title) { state_->sidebar.focus(title); }
+void Lab::openLesson(const std::string& file) { state_->openLesson(file); }
+const LessonPlayer& Lab::lessons() const { return state_->lessons; }
+std::string Lab::lessonError() const { return state_->lessonError; }
+void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
 
 } // namespace radiant::app

@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/LabApp.h"
+#include "app/lessons/LessonPlayer.h"
 #include "app/solver/SolverCommand.h"
 #include "app/solver/Snapshot.h"
 #include "radiometry/probe/Probe.h"
@@ -81,6 +82,15 @@ public:
     [[nodiscard]] std::string statusMessage() const;
     /// Shows only the named panel expanded (screenshots of one panel); empty expands them all.
     void focusPanel(const std::string& title);
+    /// Reads a lesson file and goes to its first step; throws RadiantError (one line) on a bad file,
+    /// leaving the lab as it was.
+    void openLesson(const std::string& file);
+    /// The open lesson, its step and whether the step's actions have all run.
+    [[nodiscard]] const LessonPlayer& lessons() const;
+    /// Tests: blocks until the solver thread has applied every command sent and stopped running.
+    void waitForSolver();
+    /// The last lesson action the lab refused (empty: none), also shown in the status bar.
+    [[nodiscard]] std::string lessonError() const;
 
 private:
     struct State;

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/Lab.h"
+#include "app/lessons/Lesson.h"
 #include "render/Screenshot.h"
 #include "render/camera/Camera.h"
 
@@ -35,7 +36,10 @@ int runLab(const LabOptions& options) {
     LabOptions effective = options;
     if (const char* scale = std::getenv("RADIANT_UI_SCALE")) effective.uiScale = std::strtof(scale, nullptr);
     if (!(effective.uiScale > 0.0f)) effective.uiScale = 1.0f;
+    // A bad lesson file is refused before any window opens.
+    if (!effective.lesson.empty()) (void)lesson::readLesson(effective.lesson);
     Lab lab(effective);
+    if (!effective.lesson.empty()) lab.openLesson(effective.lesson);
     const Automation automation;
     if (!automation.panel.empty()) lab.focusPanel(automation.panel);
     const long captureAt = automation.frames > 0 ? automation.frames : 120;

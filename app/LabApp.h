@@ -16,6 +16,7 @@ struct LabOptions {
     float uiScale = 1.0f;    ///< ImGui text and spacing scale; RADIANT_UI_SCALE overrides it in runLab
     double maxPatchArea = kSolveDefaults.maxPatchArea;  ///< m^2
     bool runOnStart = true;      ///< solve as soon as the form factors are ready; false waits for Run/Step
+    std::string lesson;          ///< a lesson file to open on its first step (docs/lessons.md); empty: none
 };
 
 /// Opens the window and runs until it is closed. Returns the process exit status.

@@ -38,6 +38,8 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     root.set_version_flag("--version", std::string("radiant ") + kRadiantVersion);
     auto scene = std::make_shared<std::string>("cornell-box");
     root.add_option("scene", *scene, "glTF file or built-in scene name to open in the lab")->capture_default_str();
+    auto lesson = std::make_shared<std::string>();
+    root.add_option("--lesson", *lesson, "Open the lab on this lesson file (docs/lessons.md)");
 
     const Subcommand commands[] = {addSolveCommand(root), addProbeCommand(root), addReferenceCommand(root),
                                    addRenderCommand(root), addBenchCommand(root), addLessonCommand(root)};
@@ -55,9 +57,10 @@ ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {
     }
     for (const Subcommand& command : commands)
         if (command.app->parsed()) return {command.run, 0};
-    return {[scene] {
+    return {[scene, lesson] {
                 LabOptions options;
                 options.scene = *scene;
+                options.lesson = *lesson;
                 return runLab(options);
             },
             0};

@@ -16,6 +16,8 @@ constexpr Shortcut kShortcuts[] = {
     {LabAction::HomeView, GLFW_KEY_C, 0, "C", "back to the scene's home camera", false},
     {LabAction::TogglePanels, GLFW_KEY_H, 0, "H", "hide / show the panels", false},
     {LabAction::Dome, GLFW_KEY_S, 0, "S", "the dome over the probe point (the sky it sees) on / off", false},
+    {LabAction::NextLessonStep, GLFW_KEY_PAGE_DOWN, 0, "Page Down", "next step of the open lesson", false},
+    {LabAction::PreviousLessonStep, GLFW_KEY_PAGE_UP, 0, "Page Up", "previous step of the open lesson", false},
     {LabAction::Screenshot, GLFW_KEY_F12, 0, "F12", "save a screenshot (`radiant-YYYYMMDD-HHMMSS.png`)", false},
     {LabAction::Quit, GLFW_KEY_ESCAPE, 0, "Esc", "quit", false},
 };

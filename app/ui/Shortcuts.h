@@ -6,7 +6,10 @@
 
 namespace radiant::app {
 
-enum class LabAction { RunPause, Step, Reset, Rekey, FalseColour, Wireframe, HomeView, TogglePanels, Dome, Screenshot, Quit };
+enum class LabAction {
+    RunPause, Step, Reset, Rekey, FalseColour, Wireframe, HomeView, TogglePanels, Dome, NextLessonStep,
+    PreviousLessonStep, Screenshot, Quit
+};
 
 struct Shortcut {
     LabAction action;

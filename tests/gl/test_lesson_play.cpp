@@ -1,0 +1,154 @@
+// Every shipped lesson played to its end in the real lab (docs/lessons.md): each step's actions reach
+// the solver thread, the camera, the probe, the panels and the display, and Page Up replays a
+// step's state rather than continuing from the later one.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <variant>
+#include <vector>
+
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+
+#include "app/Lab.h"
+#include "app/lessons/Lesson.h"
+#include "radiometry/common/Error.h"
+#include "radiometry/scene/SceneLibrary.h"
+
+using namespace radiant;
+using radiant::app::Lab;
+using radiant::app::LabOptions;
+namespace lesson = radiant::app::lesson;
+
+namespace {
+
+std::vector<std::filesystem::path> shippedLessons() {
+    std::vector<std::filesystem::path> files;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(assetDirectory()) / "lessons"))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+LabOptions lessonLab() {
+    LabOptions options;
+    options.width = 1280;
+    options.height = 800;
+    options.vsync = false;
+    options.maxPatchArea = 0.01;  // coarse unless a lesson asks for finer: the matrix methods' form factors stay quick
+    options.runOnStart = false;
+    return options;
+}
+
+/// Frames until the step's actions have all run and the solver has done what they asked. Progress,
+/// not time: every few frames the test waits for the solver thread to go idle, so a slow machine
+/// takes longer but never fails for it.
+void settle(Lab& lab) {
+    for (int frame = 0; frame < 20000 && !lab.lessons().settled(); ++frame) {
+        lab.frame();
+        if (frame % 20 == 19) lab.waitForSolver();
+    }
+    REQUIRE_MESSAGE(lab.lessons().settled(), "step " << lab.lessons().step() + 1 << " did not settle");
+    lab.waitForSolver();
+    // A run goes on after the commands are taken: frames until it stops at its tolerance (each
+    // frame shows a newer iteration, so this ends on any machine).
+    for (int frame = 0; frame < 200000 && (lab.snapshot()->running || !lab.lessons().settled()); ++frame) lab.frame();
+    lab.waitForSolver();
+    for (int i = 0; i < 3; ++i) lab.frame();
+}
+
+/// What the step's actions say must now hold in the lab.
+void checkStep(Lab& lab, const lesson::LessonStep& step) {
+    const app::Snapshot& s = *lab.snapshot();
+    REQUIRE(s.scene);
+    CHECK_MESSAGE(s.error.empty(), s.error);
+    for (const lesson::Action& action : step.actions) {
+        if (const auto* method = std::get_if<lesson::SetMethod>(&action)) CHECK(s.method == method->method);
+        if (const auto* load = std::get_if<lesson::LoadScene>(&action)) CHECK(s.scene->name == load->scene);
+        if (const auto* material = std::get_if<lesson::SetMaterial>(&action)) {
+            const std::size_t surface = s.scene->findSurface(material->surface);
+            REQUIRE(surface != Scene::npos);
+            const Material& m = s.scene->materials[s.scene->surfaces[surface].material];
+            if (material->exitanceW_m2) CHECK(m.exitance.value().x == (*material->exitanceW_m2)[0]);
+            if (material->reflectance) CHECK(m.reflectance.x == (*material->reflectance)[0]);
+        }
+        if (const auto* probe = std::get_if<lesson::Probe>(&action)) {
+            const std::optional<ProbeReading> reading = lab.probeReading();
+            REQUIRE(reading);
+            CHECK(glm::length(reading->at.point - glm::dvec3{probe->point[0], probe->point[1], probe->point[2]}) < 1e-3);
+            if (probe->target) CHECK(reading->target);
+        }
+        if (const auto* display = std::get_if<lesson::SetDisplay>(&action)) {
+            if (display->links) CHECK(lab.display().showLinks == *display->links);
+            if (display->importance) CHECK(lab.display().showImportance == *display->importance);
+        }
+        if (std::holds_alternative<lesson::Run>(action)) CHECK_FALSE(s.running);  // ran to the tolerance
+    }
+}
+
+} // namespace
+
+TEST_SUITE("lesson play") {
+
+TEST_CASE("every shipped lesson plays to its end in the lab, each step doing what it says") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    const std::vector<std::filesystem::path> files = shippedLessons();
+    REQUIRE(files.size() >= 6);
+    Lab lab(lessonLab());
+    for (const std::filesystem::path& file : files) {
+        CAPTURE(file.filename().string());
+        lab.openLesson(file.string());
+        const lesson::Lesson& played = lab.lessons().lesson();
+        for (std::size_t step = 0; step < played.steps.size(); ++step) {
+            CAPTURE(step + 1);
+            if (step > 0) lab.pressKey(GLFW_KEY_PAGE_DOWN);
+            REQUIRE(lab.lessons().step() == step);
+            settle(lab);
+            CHECK(lab.lessonError().empty());
+            checkStep(lab, played.steps[step]);
+        }
+        lab.pressKey(GLFW_KEY_PAGE_DOWN);  // past the last step: stays there
+        CHECK(lab.lessons().step() + 1 == played.steps.size());
+    }
+}
+
+TEST_CASE("Page Up replays the lesson up to the earlier step: Jacobi's second sweep is sweep 2 again") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    Lab lab(lessonLab());
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "04-radiosity-equation.json").string());
+    settle(lab);
+    CHECK(lab.snapshot()->stats.iteration == 0);  // reset: B = E
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);
+    settle(lab);
+    CHECK(lab.snapshot()->stats.iteration == 1);  // "sweep 1: direct light"
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);
+    settle(lab);
+    CHECK(lab.snapshot()->stats.iteration == 2);
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);
+    settle(lab);
+    CHECK(lab.snapshot()->stats.iteration > 2);  // run to the tolerance
+    lab.pressKey(GLFW_KEY_PAGE_UP);
+    settle(lab);
+    CHECK(lab.lessons().step() == 2);
+    CHECK(lab.snapshot()->stats.iteration == 2);
+}
+
+TEST_CASE("a bad lesson file is refused in one line and the lab keeps its lesson") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    Lab lab(lessonLab());
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "05-progressive-refinement.json").string());
+    const std::filesystem::path bad = std::filesystem::temp_directory_path() / "radiant-test-lesson-play-bad.json";
+    std::ofstream(bad) << R"({"title": "t", "steps": [{"title": "a", "caption": "c", "actions": [{"scene": "nowhere.gltf"}]}]})";
+    CHECK_THROWS_AS(lab.openLesson(bad.string()), RadiantError);
+    std::filesystem::remove(bad);
+    CHECK(lab.lessons().lesson().title == "Progressive refinement: shooting light");
+}
+
+} // TEST_SUITE
