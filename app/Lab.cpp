@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <optional>
 
@@ -15,6 +17,7 @@
 #include "app/panels/HemicubeSession.h"
 #include "app/panels/HemispherePanel.h"
 #include "app/lessons/Lesson.h"
+#include "app/lessons/SessionFile.h"
 #include "app/panels/InfoPanel.h"
 #include "app/panels/LessonsPanel.h"
 #include "app/panels/IntegralsPanel.h"
@@ -88,14 +91,14 @@ struct Lab::State {
         display.uiScale = options.uiScale;
         // Our callbacks first: ImGui's backend installs its own and chains to these.
         glfwSetWindowUserPointer(window.handle(), this);
-        glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int) {
+        glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int mods) {
             if (action == GLFW_RELEASE) return;
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
             // Typing into a field, or a slider being dragged, keeps its keys; a panel merely
             // clicked does not (the lecturer's presenter sends Space and Page Down whatever was
             // clicked last).
             if (ImGuiLayer::keyboardClaimed()) return;
-            const std::optional<Shortcut> shortcut = shortcutForKey(key);
+            const std::optional<Shortcut> shortcut = shortcutForKey(key, (mods & GLFW_MOD_CONTROL) != 0);
             if (!shortcut || (action == GLFW_REPEAT && !shortcut->repeats)) return;
             self->onAction(shortcut->action);
         });
@@ -131,14 +134,16 @@ struct Lab::State {
         auto demos = std::make_unique<LectureDemosPanel>();
         demosPanel = demos.get();
         sidebar.add(std::move(demos));
-        sidebar.add(std::make_unique<LessonsPanel>(lessons, [this](const std::string& file) -> std::string {
+        auto lessonList = std::make_unique<LessonsPanel>(lessons, [this](const std::string& file) -> std::string {
             try {
                 openLesson(file);
                 return "";
             } catch (const RadiantError& error) {
                 return error.what();
             }
-        }));
+        });
+        lessonsPanel = lessonList.get();
+        sidebar.add(std::move(lessonList));
 
         live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
         if (options.runOnStart) live.send(command::Run{});
@@ -169,6 +174,17 @@ struct Lab::State {
         case LabAction::Dome: hemispherePanel->setOverlayShown(!hemispherePanel->overlayShown()); break;
         case LabAction::NextLessonStep: lessons.next(); break;
         case LabAction::PreviousLessonStep: lessons.previous(); break;
+        case LabAction::SaveSession:
+            try {
+                message = "saved the session as " + saveSession("").string();
+            } catch (const std::exception& e) {
+                message = std::string("the session was not saved: ") + e.what();
+            }
+            break;
+        case LabAction::OpenFile:
+            lessonsPanel->focusPath();
+            sidebar.focus("Lessons");
+            break;
         case LabAction::Screenshot: screenshotRequested = true; break;
         }
     }
@@ -351,10 +367,64 @@ struct Lab::State {
         lessonError.clear();
     }
 
+    /// Writes the lab's state as a session file (SessionFile.h): to `path`, or when it is empty to
+    /// radiant-session-YYYYMMDD-HHMMSS.json in the working folder. Returns where it went.
+    std::filesystem::path saveSession(const std::string& path) {
+        const Snapshot& s = live.snapshot();
+        if (!s.scene) throw RadiantError({"session", ""}, "no scene is shown yet");
+        lesson::SessionState state;
+        bool builtin = false;
+        for (const std::string& name : builtinSceneNames()) builtin = builtin || name == s.scene->name;
+        state.scene = builtin ? s.scene->name : std::filesystem::absolute(s.scene->name).lexically_normal().string();
+        state.maxPatchAreaM2 = s.meshing.maxPatchArea;
+        state.method = s.method;
+        state.tolerance = s.tolerance;
+        state.linkTolerance = s.linkTolerance;
+        for (const Surface& surface : s.scene->surfaces) {
+            const Material& m = s.scene->materials[surface.material];
+            const Rgb e = m.exitance.value();
+            state.materials.push_back({surface.name, lesson::Triple{m.reflectance.x, m.reflectance.y, m.reflectance.z},
+                                       lesson::Triple{e.x, e.y, e.z}});
+        }
+        const render::Camera camera = orbit.camera();
+        const glm::dvec3 pivot = orbit.pivot();
+        state.camera = {false, {camera.eye.x, camera.eye.y, camera.eye.z}, {pivot.x, pivot.y, pivot.z},
+                        camera.fieldOfView.value() * 180.0 / std::numbers::pi};
+        if (const std::optional<ProbePick>& pick = probePanel->picked()) {
+            lesson::Probe probe{{pick->point.x, pick->point.y, pick->point.z},
+                                lesson::Triple{pick->normal.x, pick->normal.y, pick->normal.z}, std::nullopt};
+            if (const std::optional<ProbeReading>& reading = probePanel->reading(); reading && reading->target)
+                probe.target = reading->target->name;
+            state.probe = probe;
+        }
+        state.display.colour = display.colourMode == render::ColourMode::FalseColour   ? "false-colour"
+                               : display.colourMode == render::ColourMode::Reflectance ? "reflectance"
+                                                                                       : "tone-mapped";
+        state.display.links = display.showLinks;
+        state.display.importance = display.showImportance;
+        state.display.wireframe = display.wireframe;
+        state.display.isolines = display.isolines;
+        state.display.exposureStops = display.exposureStops;
+
+        const std::time_t now = std::time(nullptr);
+        std::tm local{};
+        localtime_r(&now, &local);
+        char stamp[32], readable[32];
+        std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+        std::strftime(readable, sizeof readable, "%Y-%m-%d %H:%M:%S", &local);
+        const std::filesystem::path file = path.empty() ? std::filesystem::path("radiant-session-" + std::string(stamp) + ".json")
+                                                        : std::filesystem::path(path);
+        std::ofstream out(file);
+        if (!out) throw RadiantError({file.string(), ""}, "cannot open for writing");
+        out << lesson::sessionText(state, readable);
+        if (!out) throw RadiantError({file.string(), ""}, "write failed");
+        return std::filesystem::absolute(file);
+    }
+
     /// The step's title and caption, large, in the 3D view's lower left corner: what the lecturer
     /// talks about, readable from the back of the room.
     void drawLessonCaption(const render::Viewport& view) const {
-        if (!lessons.isOpen()) return;
+        if (!lessons.isOpen() || lessons.lesson().session) return;
         const lesson::LessonStep& step = lessons.lesson().steps[lessons.step()];
         const float margin = ImGui::GetFontSize();
         const float width = std::max(12 * margin, std::min(0.7f * static_cast<float>(view.width), 40 * margin));
@@ -477,6 +547,7 @@ struct Lab::State {
     ProbePanel* probePanel = nullptr;  // owned by the sidebar
     HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
     LectureDemosPanel* demosPanel = nullptr;  // owned by the sidebar
+    LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
     double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with
     LessonPlayer lessons;
     Stage stage{*this};
@@ -536,8 +607,8 @@ std::uint64_t Lab::frameCount() const { return state_->frameCount; }
 std::uint64_t Lab::radiosityUploads() const { return state_->patches->radiosityUploads(); }
 std::shared_ptr<const Snapshot> Lab::snapshot() const { return state_->live.current; }
 void Lab::send(SolverCommand command) { state_->live.send(std::move(command)); }
-void Lab::pressKey(int glfwKey) {
-    if (const std::optional<Shortcut> shortcut = shortcutForKey(glfwKey)) state_->onAction(shortcut->action);
+void Lab::pressKey(int glfwKey, bool control) {
+    if (const std::optional<Shortcut> shortcut = shortcutForKey(glfwKey, control)) state_->onAction(shortcut->action);
 }
 bool Lab::clickAt(const glm::dvec2& framebufferPixel) { return state_->pickAt(framebufferPixel); }
 std::optional<ProbeReading> Lab::probeReading() const { return state_->probePanel->reading(); }
@@ -551,6 +622,7 @@ void Lab::focusPanel(const std::string& title) { state_->sidebar.focus(title); }
 void Lab::openLesson(const std::string& file) { state_->openLesson(file); }
 const LessonPlayer& Lab::lessons() const { return state_->lessons; }
 std::string Lab::lessonError() const { return state_->lessonError; }
+std::filesystem::path Lab::saveSession(const std::string& file) { return state_->saveSession(file); }
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
 
 } // namespace radiant::app

@@ -3,6 +3,7 @@
 // starts the solver thread), frame() as often as wanted, read frames back, destroy (closes the
 // window). GL-free header.
 #include <cstdint>
+#include <filesystem>
 #include <memory>
 #include <optional>
 #include <string>
@@ -68,7 +69,7 @@ public:
     /// Sends a command to the solver thread, as the panels do.
     void send(SolverCommand command);
     /// A key press as the keyboard gives it (GLFW key code): the shortcuts listed in the Info panel.
-    void pressKey(int glfwKey);
+    void pressKey(int glfwKey, bool control = false);
     /// A left click at a framebuffer pixel (top-left origin), as a mouse click in the 3D view: picks
     /// the probe point. False when the ray hits nothing.
     bool clickAt(const glm::dvec2& framebufferPixel);
@@ -87,6 +88,9 @@ public:
     void openLesson(const std::string& file);
     /// The open lesson, its step and whether the step's actions have all run.
     [[nodiscard]] const LessonPlayer& lessons() const;
+    /// Saves the lab's state as a session file (Ctrl+S; SessionFile.h) to `file`, or to a dated
+    /// name in the working folder when empty; returns the path. Throws RadiantError when it cannot.
+    std::filesystem::path saveSession(const std::string& file = "");
     /// Tests: blocks until the solver thread has applied every command sent and stopped running.
     void waitForSolver();
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.

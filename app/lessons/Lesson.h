@@ -86,6 +86,8 @@ struct LessonStep {
 
 struct Lesson {
     std::string title;
+    /// A saved session (SessionFile.h): one step that restores the lab, played without a caption.
+    bool session = false;
     std::filesystem::path file;  ///< where it was read from; relative scene paths resolve against its folder
     std::vector<LessonStep> steps;
 };

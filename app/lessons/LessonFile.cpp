@@ -315,9 +315,10 @@ Lesson parseLesson(const std::string& source, const std::filesystem::path& file)
                            "not valid JSON");
     }
     if (!json.is_object()) at.fail("", "expected an object with \"title\" and \"steps\", found " + typeName(json));
-    rejectUnknownKeys(at, json, {"title", "steps"});
+    rejectUnknownKeys(at, json, {"title", "session", "steps"});
     Lesson lesson;
     lesson.file = file;
+    if (json.contains("session")) lesson.session = flag(at, json["session"], "session");
     lesson.title = text(at, member(at, json, "title"), "title");
     const Json& steps = member(at, json, "steps");
     if (!steps.is_array() || steps.empty()) at.fail("steps", "expected a list of one or more steps");

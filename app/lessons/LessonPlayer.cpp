@@ -127,6 +127,7 @@ std::optional<std::string> LessonPlayer::update(LessonStage& stage) {
         }
         advance();
     }
+    if (lesson_ && lesson_->session) close();  // a session restores the lab and is done
     return std::nullopt;
 }
 

@@ -42,19 +42,23 @@ LessonsPanel::LessonsPanel(LessonPlayer& player, std::function<std::string(const
 }
 
 void LessonsPanel::draw() {
-    if (player_.isOpen()) {
+    if (player_.isOpen() && !player_.lesson().session) {
         drawLesson();
         ImGui::Separator();
     }
     if (shipped_.empty()) ImGui::TextDisabled("No lessons found in the assets folder.");
     for (const Shipped& lesson : shipped_) {
-        const bool current = player_.isOpen() && player_.lesson().file == lesson.path;
+        const bool current = player_.isOpen() && !player_.lesson().session && player_.lesson().file == lesson.path;
         if (ImGui::Selectable(lesson.title.c_str(), current)) error_ = open_(lesson.path);
     }
     ImGui::Spacing();
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3 * ImGui::GetStyle().FramePadding.x -
                             ImGui::GetStyle().ItemSpacing.x);
-    const bool entered = ImGui::InputTextWithHint("##lessonpath", "lesson file (.json)", path_.data(), path_.size(),
+    if (focusPath_) {
+        ImGui::SetKeyboardFocusHere();
+        focusPath_ = false;
+    }
+    const bool entered = ImGui::InputTextWithHint("##lessonpath", "lesson or session file (.json)", path_.data(), path_.size(),
                                                   ImGuiInputTextFlags_EnterReturnsTrue);
     ImGui::SameLine();
     if ((ImGui::Button("Open") || entered) && path_[0] != '\0') error_ = open_(path_.data());

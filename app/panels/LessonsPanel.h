@@ -20,6 +20,8 @@ public:
     [[nodiscard]] bool openByDefault() const override { return false; }
     [[nodiscard]] bool busy() const override { return player_.isOpen() && !player_.settled(); }
     void draw() override;
+    /// Puts the keyboard in the path field at the next draw (Ctrl+O).
+    void focusPath() { focusPath_ = true; }
 
 private:
     struct Shipped {
@@ -33,6 +35,7 @@ private:
     std::vector<Shipped> shipped_;
     std::array<char, 1024> path_{};
     std::string error_;
+    bool focusPath_ = false;
 };
 
 } // namespace radiant::app

@@ -18,6 +18,8 @@ constexpr Shortcut kShortcuts[] = {
     {LabAction::Dome, GLFW_KEY_S, 0, "S", "the dome over the probe point (the sky it sees) on / off", false},
     {LabAction::NextLessonStep, GLFW_KEY_PAGE_DOWN, 0, "Page Down", "next step of the open lesson", false},
     {LabAction::PreviousLessonStep, GLFW_KEY_PAGE_UP, 0, "Page Up", "previous step of the open lesson", false},
+    {LabAction::SaveSession, GLFW_KEY_S, 0, "Ctrl+S", "save the session (scene, materials, method, camera, probe, display) as `radiant-session-YYYYMMDD-HHMMSS.json`", false, true},
+    {LabAction::OpenFile, GLFW_KEY_O, 0, "Ctrl+O", "open a lesson or session file (the Lessons panel's path field)", false, true},
     {LabAction::Screenshot, GLFW_KEY_F12, 0, "F12", "save a screenshot (`radiant-YYYYMMDD-HHMMSS.png`)", false},
     {LabAction::Quit, GLFW_KEY_ESCAPE, 0, "Esc", "quit", false},
 };
@@ -34,9 +36,11 @@ constexpr MouseControl kMouse[] = {
 std::span<const Shortcut> labShortcuts() { return kShortcuts; }
 std::span<const MouseControl> labMouseControls() { return kMouse; }
 
-std::optional<Shortcut> shortcutForKey(int glfwKey) {
+std::optional<Shortcut> shortcutForKey(int glfwKey, bool control) {
     for (const Shortcut& shortcut : kShortcuts)
-        if (shortcut.key == glfwKey || (shortcut.alternateKey != 0 && shortcut.alternateKey == glfwKey)) return shortcut;
+        if (shortcut.control == control &&
+            (shortcut.key == glfwKey || (shortcut.alternateKey != 0 && shortcut.alternateKey == glfwKey)))
+            return shortcut;
     return std::nullopt;
 }
 

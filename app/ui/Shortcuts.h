@@ -8,7 +8,7 @@ namespace radiant::app {
 
 enum class LabAction {
     RunPause, Step, Reset, Rekey, FalseColour, Wireframe, HomeView, TogglePanels, Dome, NextLessonStep,
-    PreviousLessonStep, Screenshot, Quit
+    PreviousLessonStep, SaveSession, OpenFile, Screenshot, Quit
 };
 
 struct Shortcut {
@@ -18,12 +18,13 @@ struct Shortcut {
     const char* keys;    ///< as the README and the Info panel name them: "N or Right"
     const char* does;    ///< what it does, in the README's words
     bool repeats;        ///< a held key repeats it (stepping)
+    bool control = false;  ///< only with Ctrl held (Ctrl+S saves; S alone is another action)
 };
 
 /// Every shortcut, in the order the README lists them.
 std::span<const Shortcut> labShortcuts();
-/// The shortcut a key press triggers, if any.
-std::optional<Shortcut> shortcutForKey(int glfwKey);
+/// The shortcut a key press triggers, if any; `control`: Ctrl was held.
+std::optional<Shortcut> shortcutForKey(int glfwKey, bool control = false);
 
 /// The mouse, for the Info panel's list (not dispatched by the table).
 struct MouseControl {

@@ -4,6 +4,7 @@
 
 #include <fstream>
 #include <set>
+#include <utility>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -15,15 +16,20 @@ using namespace radiant::app;
 TEST_SUITE("lab") {
 
 TEST_CASE("every shortcut key triggers its own action and no key two") {
-    std::set<int> keys;
+    std::set<std::pair<int, bool>> keys;
     for (const Shortcut& shortcut : labShortcuts()) {
         CAPTURE(shortcut.keys);
-        CHECK(keys.insert(shortcut.key).second);
-        if (shortcut.alternateKey != 0) CHECK(keys.insert(shortcut.alternateKey).second);
-        REQUIRE(shortcutForKey(shortcut.key));
-        CHECK(shortcutForKey(shortcut.key)->action == shortcut.action);
+        CHECK(keys.insert({shortcut.key, shortcut.control}).second);
+        if (shortcut.alternateKey != 0) CHECK(keys.insert({shortcut.alternateKey, shortcut.control}).second);
+        REQUIRE(shortcutForKey(shortcut.key, shortcut.control));
+        CHECK(shortcutForKey(shortcut.key, shortcut.control)->action == shortcut.action);
     }
     CHECK_FALSE(shortcutForKey(0));
+    // Ctrl+S saves the session; S alone is the dome.
+    REQUIRE(shortcutForKey('S', true));
+    REQUIRE(shortcutForKey('S', false));
+    CHECK(shortcutForKey('S', true)->action == LabAction::SaveSession);
+    CHECK(shortcutForKey('S', false)->action == LabAction::Dome);
 }
 
 TEST_CASE("the README's key table is the shortcut table") {
