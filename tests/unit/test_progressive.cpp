@@ -239,12 +239,13 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
 TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface and patch by patch") {
     // Same mesh, same kernel, so the converged answers must agree up to visibility sampling. A block
     // used to shoot its mean radiosity as if uniform over its outline, with visibility rays that ran
-    // into the receiver's own block from beyond its horizon: blocks 3 and 4 left the tall block 6-8.6%
-    // dark per surface and patches 3.5% off on average, 49% at worst. Each member now sends its own
-    // share of the power and rays weigh what their member sends (ProgressiveShot.cpp). Measured
-    // (seed 1, 457 lit patches of 577): worst surface 1.1% / 0.39% / 1.1% / 1.9% and patch mean
-    // 1.2% / 0.86% / 1.2% / 1.4% for blocks default (3) / 2 / 3 / 4; the worst single patch, 14-27%,
-    // is the weak shots' few-ray visibility noise, as with every patch shooting alone (next test).
+    // into the receiver's own block from beyond its horizon: blocks 2 / 3 / 4 left surfaces up to
+    // 2.9% / 8.5% / 7.4% off (the tall block, dark) and patches 2.2% / 5.7% / 5.3% off on average,
+    // 36-51% at worst (this test fails on that code). Each member now sends its own share of the
+    // power and rays weigh what their member sends (ProgressiveShot.cpp). Measured
+    // (seed 1, 457 lit patches of 577, to 1e-4 as to 1e-5): worst surface 0.39% / 1.1% / 1.9% and
+    // patch mean 0.86% / 1.2% / 1.4% for blocks 2 / 3 / 4; the worst single patch, 14-27%, is the
+    // weak shots' few-ray visibility noise, as with every patch shooting alone (next test).
     const Scene cornell = makeCornellBox();
     const PatchMesh mesh = meshAt(cornell, 0.004);
     SolverOptions fine;
@@ -252,13 +253,14 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
     auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh, fine);
     solveTo(*reference, 1e-9);
     const std::vector<Rgb> expected = surfaceMeans(mesh, reference->solution());
-    for (const std::size_t block : {std::size_t{0}, std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
-        CAPTURE(block);  // 0: the default (ProgressiveOptions::shooterCount)
+    // The default shooter count gives blocks of 3 at this mesh (78 shooters).
+    for (const std::size_t block : {std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
+        CAPTURE(block);
         ProgressiveOptions progressive;
         progressive.shooterBlock = block;
         auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, progressive);
         REQUIRE(solver->shooters().size() * 2 < mesh.size());
-        solveTo(*solver, 1e-5, 20000);
+        solveTo(*solver, 1e-4, 20000);
         const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
         double worstSurface = 0;
         for (std::size_t s = 0; s < means.size(); ++s)
