@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstdint>
 #include <memory>
+#include <numbers>
 #include <numeric>
 #include <string>
 #include <vector>
@@ -31,7 +32,6 @@
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/FormFactorMatrix.h"
-#include "radiometry/solver/HierarchicalFormFactor.h"
 #include "radiometry/solver/ParallelFor.h"
 #include "radiometry/solver/ProgressiveSolver.h"
 
@@ -66,10 +66,10 @@ constexpr double kNearInDiameters = 1.5;
 /// box at 10k patches 5.6x slower to residual 1e-2 (1.6 -> 9.0 s).
 constexpr int kPenumbraRayFactor = 4;
 
-/// A group's members weigh the receiver's kernel by their centroids' point kernel alone (the ratio
-/// in unoccludedFromShot) once the receiver is farther from the group than its radius and than
-/// this many of the largest member's areas squared: the point kernel's error, A / r^2 per member,
-/// cancels in the ratio but for its variation across the group.
+/// A member weighs the receiver's kernel by its centroid's point kernel (in the ratio of
+/// unoccludedFromShot) once the receiver's centroid is this many of the member's areas away,
+/// squared; nearer, by the exact kernel. The point kernel's error, about A / r^2, cancels in the
+/// ratio but for its variation across the group.
 constexpr double kRatioDistanceSquaredOverArea = 8;
 constexpr double kFullPenumbraShare = 0.25;
 
@@ -121,7 +121,6 @@ struct ShotGeometry {
     std::vector<std::uint32_t> shooterSurface, shooterFace;
     std::vector<double> shooterRadius;  ///< farthest corner from the shooter's centroid, m
     std::vector<double> patchRadius;    ///< the same for each patch
-    std::vector<double> largestMember;  ///< the largest patch area of each shooter, m^2
     ProgressiveShooters groups;
     std::vector<std::uint32_t> timesShot;  ///< per group: a fresh jitter for every shot
     std::unique_ptr<RayCaster> rays;
@@ -281,8 +280,8 @@ const ReceiverRule& ruleFor(const PatchPolygon& receiver, const PatchPolygon& so
 /// so that F times the group's mean unshot radiosity is the light each member sends. Treating the
 /// group as uniform (the outline's kernel) is exact only when every member holds power in proportion
 /// to its area; a block whose light sits on its near half (floor beside a box, the lit half of a
-/// block's side) is otherwise lit as though its light sat at its centre: 7-8.6% per surface against
-/// Gauss-Seidel on the Cornell box's blocks at block 3-4, and 50-65% on single patches.
+/// block's side) is otherwise lit as though its light sat at its centre (with the rays below, up to
+/// 8.5% per surface and 51% per patch against Gauss-Seidel on the Cornell box at blocks of 3-4).
 double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t receiver,
                           std::span<const double> memberShare, std::vector<double>& memberWeight) {
     const PatchPolygon& s = g.shooters[shooter];
@@ -292,41 +291,38 @@ double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_
     if (memberShare.empty() || members.size() == 1)
         return receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter]));
     memberWeight.assign(members.size(), 0.0);
-    // Far from the whole group (for the receiver's size and every member's): the outline's exact
-    // kernel, scaled by how the point kernel at the members' centroids weighs the power against
-    // the area. The point kernel's own bias cancels in the ratio, a uniform group gets the outline's
-    // kernel exactly, and a shot costs a few flops per member instead of a contour integral each.
-    const double toCentre = glm::length(r.centroid - s.centroid);
-    const double groupGap = toCentre - g.shooterRadius[shooter];
-    if (groupGap > g.shooterRadius[shooter] &&
-        groupGap * groupGap >= kRatioDistanceSquaredOverArea * g.largestMember[shooter]) {
-        double byPower = 0, byArea = 0;
-        for (std::size_t k = 0; k < members.size(); ++k) {
-            const PatchPolygon& m = g.polygons[members[k]];
-            const glm::dvec3 d = m.centroid - r.centroid;
-            const double r2 = glm::dot(d, d);
+    // The outline's exact kernel averaged over the receiver, scaled by how the kernel from the
+    // receiver's centroid to each member weighs the power against the area: a uniform group gets the
+    // outline's kernel exactly, the kernel's own errors (the centroid for the receiver, a member's
+    // centroid for the member where it is far for its size) cancel in the ratio but for their
+    // variation across the group, and a shot costs a few flops per member beyond the few near ones
+    // (an exact contour integral per member and Gauss point made a shot ~10x slower).
+    const double groupGap = glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter];
+    double byPower = 0, byArea = 0;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const PatchPolygon& m = g.polygons[members[k]];
+        const glm::dvec3 d = m.centroid - r.centroid;
+        const double r2 = glm::dot(d, d);
+        double kernel = 0;  // per unit area of the member
+        if (r2 >= kRatioDistanceSquaredOverArea * m.area) {
             const double cosR = glm::dot(r.normal, d), cosM = -glm::dot(m.normal, d);
-            const double kernel = cosR > 0 && cosM > 0 ? cosR * cosM / (r2 * r2) : 0.0;
-            memberWeight[k] = kernel;
-            byPower += memberShare[k] * kernel;
-            byArea += m.area / s.area * kernel;
+            kernel = cosR > 0 && cosM > 0 ? cosR * cosM / (std::numbers::pi * r2 * r2) : 0.0;
+        } else {
+            kernel = pointToPolygonFormFactor(r.centroid, r.normal, m.corners()) / m.area;
         }
-        if (byArea > 0) return receiverAverage(r, s, ruleFor(r, s, groupGap)) * byPower / byArea;
+        memberWeight[k] = kernel;
+        byPower += memberShare[k] * kernel;
+        byArea += m.area / s.area * kernel;
     }
+    if (byArea > 0) return receiverAverage(r, s, ruleFor(r, s, groupGap)) * byPower / byArea;
+    // The receiver's centroid sees none of the group's members (but its Gauss points may): each
+    // member's kernel averaged over the receiver.
     double sum = 0;
     for (std::size_t k = 0; k < members.size(); ++k) {
         if (memberShare[k] <= 0) continue;
         const PatchPolygon& m = g.polygons[members[k]];
-        const double distance = glm::length(r.centroid - m.centroid);
-        const double lowerBound = distance - g.patchRadius[members[k]];
-        // Most pairs are far for both patches' sizes: there the 2 x 2 Gauss point kernel over the
-        // member (within 0.2% of Lambert's, HierarchicalFormFactor.h) stands in for the contour
-        // integral, whose cost times the members made a shot ~10x slower.
-        const bool far = lowerBound > kFarInDiameters * std::sqrt(2.0 * r.area) &&
-                         distance * distance >= hierarchical::kFarFieldDistanceSquaredOverArea * m.area;
-        const double kernel = far ? hierarchical::pointToElementFormFactor(r.centroid, r.normal, m, true)
-                                  : receiverAverage(r, m, ruleFor(r, m, lowerBound));
-        memberWeight[k] = kernel / m.area;
+        const double lowerBound = glm::length(r.centroid - m.centroid) - g.patchRadius[members[k]];
+        memberWeight[k] = receiverAverage(r, m, ruleFor(r, m, lowerBound)) / m.area;
         sum += memberShare[k] * memberWeight[k];
     }
     return sum * s.area;
@@ -403,11 +399,6 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
         double radius = 0;
         for (const glm::dvec3& corner : patch.corners()) radius = std::max(radius, glm::length(corner - patch.centroid));
         geometry->patchRadius.push_back(radius);
-    }
-    for (std::size_t group = 0; group < shooters.size(); ++group) {
-        double largest = 0;
-        for (const std::uint32_t i : shooters.group(group)) largest = std::max(largest, geometry->polygons[i].area);
-        geometry->largestMember.push_back(largest);
     }
     geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = std::make_unique<RayCaster>(scene);

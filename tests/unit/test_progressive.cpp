@@ -243,8 +243,8 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
     // 2.9% / 8.5% / 7.4% off (the tall block, dark) and patches 2.2% / 5.7% / 5.3% off on average,
     // 36-51% at worst (this test fails on that code). Each member now sends its own share of the
     // power and rays weigh what their member sends (ProgressiveShot.cpp). Measured
-    // (seed 1, 457 lit patches of 577, to 1e-4 as to 1e-5): worst surface 0.39% / 1.1% / 1.9% and
-    // patch mean 0.86% / 1.2% / 1.4% for blocks 2 / 3 / 4; the worst single patch, 14-27%, is the
+    // (seed 1, 457 lit patches of 577, to 1e-4 as to 1e-5): worst surface 0.46% / 0.59% / 1.8% and
+    // patch mean 0.88% / 1.2% / 1.3% for blocks 2 / 3 / 4; the worst single patch, 14-26%, is the
     // weak shots' few-ray visibility noise, as with every patch shooting alone (next test).
     const Scene cornell = makeCornellBox();
     const PatchMesh mesh = meshAt(cornell, 0.004);
@@ -270,7 +270,7 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
         MESSAGE("block ", block, " (", solver->shooters().size(), " shooters): worst surface ", worstSurface,
                 "; patches ", patches.counted, ": mean ", patches.mean, ", worst ", patches.worst, " on ",
                 patches.worstSurface);
-        CHECK(worstSurface < (block == 4 ? 0.025 : 0.015));
+        CHECK(worstSurface < (block == 4 ? 0.025 : 0.01));
         CHECK(patches.mean < 0.015);
         CHECK(patches.worst < 0.3);
     }
