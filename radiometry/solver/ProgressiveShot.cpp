@@ -65,13 +65,13 @@ constexpr double kNearInDiameters = 1.5;
 /// lit by all of them. Without that, 64 rays at every penumbra of every block shot made the Cornell
 /// box at 10k patches 5.6x slower to residual 1e-2 (1.6 -> 9.0 s).
 constexpr int kPenumbraRayFactor = 4;
+constexpr double kFullPenumbraShare = 0.25;
 
 /// A member weighs the receiver's kernel by its centroid's point kernel (in the ratio of
 /// unoccludedFromShot) once the receiver's centroid is this many of the member's areas away,
 /// squared; nearer, by the exact kernel. The point kernel's error, about A / r^2, cancels in the
 /// ratio but for its variation across the group.
 constexpr double kRatioDistanceSquaredOverArea = 8;
-constexpr double kFullPenumbraShare = 0.25;
 
 std::uint64_t mix64(std::uint64_t z) {
     // SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014).
