@@ -94,7 +94,8 @@ IterationStats ProgressiveSolver::step() {
     if (nextShooterPower_ > 0) {
         const std::size_t group = nextShooter_;
         lastGroup_ = static_cast<std::int64_t>(group);
-        // The group leaves as one uniform radiosity carrying its members' unshot power.
+        // The group's mean unshot radiosity times F_{j -> group}, which weighs each member by its
+        // share of the power (ProgressiveShot.cpp): the light leaves from where it is.
         Rgb power(0.0);
         double brightest = -1;
         memberPower_.clear();
