@@ -124,6 +124,33 @@ Run runRadiant(const std::string& arguments) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
+/// The black room's glTF with `edit` applied, loaded from memory (its buffers are data: URIs).
+template <class Edit>
+LoadedScene loadEdited(Edit&& edit) {
+    std::ifstream in(lightFile("point_black_room.gltf"));
+    nlohmann::json doc = nlohmann::json::parse(in);
+    edit(doc);
+    const std::string text = doc.dump();
+    return loadGltfFromMemory({reinterpret_cast<const unsigned char*>(text.data()), text.size()}, "edited.gltf");
+}
+
+/// The one-line error loading the edited file gives; empty when it loads.
+template <class Edit>
+std::string loadError(Edit&& edit) {
+    try {
+        (void)loadEdited(std::forward<Edit>(edit));
+    } catch (const RadiantError& error) {
+        return error.what();
+    }
+    return {};
+}
+
+bool anyContains(const std::vector<std::string>& lines, const std::string& part) {
+    for (const std::string& line : lines)
+        if (contains(line, part)) return true;
+    return false;
+}
+
 } // namespace
 
 TEST_SUITE("scenes") {
@@ -164,6 +191,40 @@ TEST_CASE("the loader reads point, spot and directional lights in SI units from 
     CHECK(sun.lights[0].direction.x == relativeTo(-std::sin(std::numbers::pi / 3), 1e-9));
     CHECK(sun.lights[0].direction.y == relativeTo(-0.5, 1e-9));
     CHECK(sun.lights[0].normalIrradiance.value().x == relativeTo(1000.0 / 179.0, 1e-12));
+}
+
+TEST_CASE("a bad light is refused in one line naming it; one that gives no light or is placed nowhere is a warning") {
+    const auto light = [](nlohmann::json& doc) -> nlohmann::json& { return doc["extensions"]["KHR_lights_punctual"]["lights"][0]; };
+    const auto refused = [](const std::string& message, const std::string& part) {
+        CAPTURE(message);
+        CHECK(contains(message, "edited.gltf: "));
+        CHECK(contains(message, part));
+        CHECK(!contains(message, "\n"));
+    };
+    refused(loadError([&](nlohmann::json& d) { light(d)["intensity"] = -1; }), "light 0 'Bulb': intensity -1 must be a finite value >= 0 (cd)");
+    refused(loadError([&](nlohmann::json& d) { light(d)["color"] = {1, 1}; }), "light 0 'Bulb': color has 2 values, expected 3");
+    refused(loadError([&](nlohmann::json& d) { light(d)["color"] = {1, -0.5, 1}; }), "color band 1 is -0.5, expected >= 0");
+    refused(loadError([&](nlohmann::json& d) {
+                light(d)["type"] = "spot";
+                light(d)["spot"] = {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.5}};
+            }),
+            "spot cone angles inner 0.6 and outer 0.5 rad must satisfy 0 <= inner < outer <= pi/2");
+    refused(loadError([](nlohmann::json& d) { d["nodes"].back()["extensions"]["KHR_lights_punctual"]["light"] = 3; }),
+            "KHR_lights_punctual light 3 out of range (light count 1)");
+
+    const LoadedScene dark = loadEdited([&](nlohmann::json& d) { light(d)["intensity"] = 0; });
+    CHECK(dark.scene.lights.empty());
+    CHECK(dark.ignoredLights == 1);
+    CHECK(anyContains(dark.warnings, "light 0 'Bulb': gives no light"));
+    const LoadedScene unplaced = loadEdited([](nlohmann::json& d) { d["nodes"].back().erase("extensions"); });
+    CHECK(unplaced.scene.lights.empty());
+    CHECK(anyContains(unplaced.warnings, "light 0 'Bulb' (KHR_lights_punctual) is placed by no node of the scene; ignored"));
+    const LoadedScene ranged = loadEdited([&](nlohmann::json& d) { light(d)["range"] = 5; });
+    CHECK(ranged.scene.lights.size() == 1);
+    CHECK(anyContains(ranged.warnings, "range 5 m ignored"));
+    const LoadedScene area = loadEdited([&](nlohmann::json& d) { light(d)["type"] = "area"; });
+    CHECK(area.scene.lights.empty());
+    CHECK(anyContains(area.warnings, "type 'area' is not point, spot or directional; light ignored"));
 }
 
 TEST_CASE("a Blender point lamp's 'watt' arrives as 683/179 W of white light") {
