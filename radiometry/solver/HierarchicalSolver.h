@@ -102,8 +102,7 @@ protected:
     [[nodiscard]] unsigned threads() const { return threads_; }
     [[nodiscard]] const RayCaster* rayCaster() const { return caster_.get(); }
     [[nodiscard]] std::span<const Rgb> surfaceReflectance() const { return surfaceReflectance_; }
-    [[nodiscard]] std::span<const Rgb> surfaceExitance() const { return surfaceExitance_; }
-    /// Sum over elements of A E, the larger band (W): the scale of the refinement threshold.
+    /// Sum over the roots of A (E + rho H), the larger band (W): the scale of the refinement threshold.
     [[nodiscard]] double emittedPower() const;
     /// Mean reflectance over the bands of the element's surface.
     [[nodiscard]] double meanReflectance(ElementIndex e) const;

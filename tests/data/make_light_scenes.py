@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Writes small glTF scenes lit by KHR_lights_punctual lights, shaped like Blender's exporter output
-(make_blender_scenes.py's builder), for tests/unit/test_punctual_lights.cpp:
+(make_blender_scenes.py's builder), for tests/unit/test_punctual_lights.cpp, and copies one of each
+light type into the glTF fuzzer's seed corpus:
 
     python3 tests/data/make_light_scenes.py
 
@@ -10,11 +11,13 @@ single-sided walls facing in.
 """
 import math
 import os
+import shutil
 
 from make_blender_scenes import Gltf
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 LIGHTS = os.path.join(HERE, "lights")
+CORPUS = os.path.join(HERE, "..", "fuzz", "corpus", "fuzz_gltf_loader")
 
 # Inside faces of the room, each wound counter-clockwise seen from inside (normal pointing in).
 ROOM = {
@@ -102,6 +105,9 @@ def main():
     spot_floor()
     sun_floor()
     dark_room()
+    # Seeds for the glTF fuzzer's light parsing: one of each type.
+    for name in ("point_black_room.gltf", "spot_floor.gltf", "sun_floor.gltf"):
+        shutil.copy(os.path.join(LIGHTS, name), os.path.join(CORPUS, "lights_" + name))
 
 
 if __name__ == "__main__":
