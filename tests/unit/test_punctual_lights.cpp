@@ -247,10 +247,11 @@ TEST_CASE("a black room lit by a point light: every method's probe reads E = I c
         CAPTURE(methodName(method));
         const Solution s = solve("point_black_room.gltf", method);
         CHECK(s.totalPower() == 0.0);  // nothing reflects
-        for (const auto& [x, n] : {std::pair{glm::dvec3(0, 0, 0), glm::dvec3(0, 1, 0)},
-                                    std::pair{glm::dvec3(-1, 0, 1), glm::dvec3(0, 1, 0)},
-                                    std::pair{glm::dvec3(-2, 1.5, 0.5), glm::dvec3(1, 0, 0)},
-                                    std::pair{glm::dvec3(1, 3, -1), glm::dvec3(0, -1, 0)}}) {
+        for (const auto& at : {std::pair{glm::dvec3(0, 0, 0), glm::dvec3(0, 1, 0)},
+                               std::pair{glm::dvec3(-1, 0, 1), glm::dvec3(0, 1, 0)},
+                               std::pair{glm::dvec3(-2, 1.5, 0.5), glm::dvec3(1, 0, 0)},
+                               std::pair{glm::dvec3(1, 3, -1), glm::dvec3(0, -1, 0)}}) {
+            const glm::dvec3 x = at.first, n = at.second;
             CAPTURE(x);
             const ProbeReading reading = s.probe(x, n);
             const double expected = pointSourceE(kBulbIntensity, kBulb, x, n);
