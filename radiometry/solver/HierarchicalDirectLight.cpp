@@ -14,6 +14,15 @@ Rgb HierarchicalSolver::elementSource(ElementIndex e) const {
     return surfaceExitance_[s] + surfaceReflectance_[s] * elementDirect_[e];
 }
 
+Rgb HierarchicalSolver::patchDirectCorrection(std::size_t patch) const {
+    // Refinement follows the links' error, not the lights': an element may be far larger than the
+    // patches that show it, and its mean H would draw a point light's pool of light as blocks.
+    if (patch >= patchDirect_.size()) return Rgb(0.0);
+    const ElementIndex element = patchElement_[patch];
+    if (element >= elementDirect_.size()) return Rgb(0.0);
+    return surfaceReflectance_[tree_.surface(element)] * (patchDirect_[patch] - elementDirect_[element]);
+}
+
 void HierarchicalSolver::lightNewElements() {
     if (!lighting_) return;
     const std::size_t first = elementDirect_.size();

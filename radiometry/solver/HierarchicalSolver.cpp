@@ -342,7 +342,8 @@ void HierarchicalSolver::mapSolution(bool gathered) {
     if (gathered && !patchRowsCurrent_) buildPatchRows();
     gathered = gathered && patchRowsCurrent_;
     for (std::size_t i = 0; i < patches_.size(); ++i)
-        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i) : radiosity[patchElement_[i]];
+        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
+                                                                   : radiosity[patchElement_[i]] + patchDirectCorrection(i);
     afterSolutionMapped();
 }
 

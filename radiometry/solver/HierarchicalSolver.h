@@ -164,6 +164,9 @@ private:
     void setLeavesToEmission();
     /// H for the elements created since the last call (and each patch's on the first), in parallel.
     void lightNewElements();
+    /// rho (H of the patch - H of the element it shows): the lights' direct part at the patch's
+    /// resolution where the patch shows an element's constant; zero without lights.
+    [[nodiscard]] Rgb patchDirectCorrection(std::size_t patch) const;
 
     SolverOptions options_;
     HierarchicalRefinement refinement_;
