@@ -55,8 +55,9 @@ void GatheringSolver::gatherAll(std::vector<Rgb>& gathered) const {
 }
 
 std::size_t GatheringSolver::bytes() const {
-    // area, reflectance, exitance, B, and one more Rgb per patch for the sweep's scratch array.
-    return matrix_->bytes() + materials_.size() * (sizeof(double) + 4 * sizeof(Rgb));
+    // area, reflectance, exitance, the lights' H, the source E + rho H, B, and one more Rgb per patch
+    // for the sweep's scratch array.
+    return matrix_->bytes() + materials_.size() * (sizeof(double) + 6 * sizeof(Rgb));
 }
 
 Rgb GatheringSolver::residualPower() {
