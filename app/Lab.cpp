@@ -109,6 +109,7 @@ struct Lab::State {
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
         scenePanel = scene.get();
         auto probe = std::make_unique<ProbePanel>(live);
+        probe->followUnits(display);
         probePanel = probe.get();
         sidebar.add(std::move(scene));
         sidebar.add(std::make_unique<SolverPanel>(live));

@@ -11,6 +11,7 @@
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/units/Photometry.h"
 
 namespace radiant::app {
 
@@ -236,6 +237,15 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     row("B of patch", "W/m\xC2\xB2", reading.patchRadiosity.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The solver's own value for patch %zu, constant over the patch", reading.at.patch);
+    if (display_ && display_->photometric) {
+        ImGui::Spacing();
+        scalarRow("E_v", "%.4g lx", illuminanceLux(reading.irradiance));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Illuminance: 179 lm/W x (0.265 E_r + 0.670 E_g + 0.065 E_b), Radiance's convention");
+        scalarRow("L_v", "%.4g cd/m\xC2\xB2", luminanceCdPerM2(reading.radiance));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
+    }
     drawPathTraced(reading);
 }
 

@@ -18,6 +18,7 @@
 #include "app/panels/PathTracedReading.h"
 #include "app/solver/LiveSolve.h"
 #include "radiometry/probe/Probe.h"
+#include "render/DisplaySettings.h"
 
 namespace radiant {
 class RayCaster;
@@ -53,6 +54,8 @@ public:
     [[nodiscard]] std::uint64_t readingGeneration() const { return readingGeneration_; }
     /// Chooses the target surface by index (the combo does this too).
     void setTarget(std::size_t surface);
+    /// The display settings whose units switch adds lx and cd/m^2 rows (kept by reference).
+    void followUnits(const render::DisplaySettings& display) { display_ = &display; }
 
     /// Readings are refreshed at most this often while the solve runs.
     static constexpr std::chrono::milliseconds kRefreshInterval{250};
@@ -87,6 +90,7 @@ private:
     std::chrono::steady_clock::time_point lastStart_{};
     PathTracedReading pathTraced_;  ///< last: its worker reads picker_'s rays
     bool pathTracedCurrent_ = false;  ///< pathTraced_ runs at pick_
+    const render::DisplaySettings* display_ = nullptr;
 };
 
 } // namespace radiant::app

@@ -97,7 +97,7 @@ glm::dvec3 unitNormal(const glm::dvec3& n) {
 } // namespace
 
 Probe::Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, const ProbeOptions& options)
-    : scene_(scene), mesh_(mesh), rays_(rays), options_(options), locator_(mesh) {
+    : scene_(scene), mesh_(mesh), rays_(rays), options_(options), locator_(mesh), lighting_(scene, rays) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& v : mesh.vertices) {
         lo = glm::min(lo, v);
@@ -163,6 +163,7 @@ ProbeReading Probe::measure(const SurfacePoint& at, const glm::dvec3& n, std::sp
     reading.interpolatedRadiosity = RadiosityRgb(interpolateRadiosity(mesh_, radiosity, at.patch, at.point));
     reading.patchRadiosity = RadiosityRgb(radiosity[at.patch]);
     reading.irradiance = irradiance(at, reading.normal, radiosity);
+    reading.directIrradiance = lighting_.at(at.point, reading.normal);
     const Material& material = scene_.materials.at(scene_.surfaces.at(at.surface).material);
     reading.radiosity = RadiosityRgb(material.exitance.value() + material.reflectance * reading.irradiance.value());
     reading.radiance = radianceFromRadiosity(reading.radiosity);
@@ -191,7 +192,7 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
                           .formFactor;
         sum += b * (f * visible);
     }
-    return IrradianceRgb(sum);
+    return IrradianceRgb(sum) + lighting_.at(at.point, up);
 }
 
 TargetReading Probe::target(const SurfacePoint& at, const glm::dvec3& n, std::size_t surface) const {

@@ -15,6 +15,8 @@
 //   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
 //   projected solid angle (integral of cos theta_x d omega) and form factor, each times its visible
 //   fraction (rays weighted by the kernel whose integral it corrects).
+//   E(x) also holds the scene's punctual lights' direct irradiance at x, each light with one shadow
+//   ray (DirectLighting.h): a patch's solution holds their light only averaged over the patch.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -25,6 +27,7 @@
 #include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/sources/DirectLighting.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -67,7 +70,8 @@ struct ProbeReading {
     RadiosityRgb interpolatedRadiosity{};  ///< from the patches' solution, as the 3D view shows it, W/m^2
     RadiosityRgb patchRadiosity{};  ///< the solver's value for the patch under the point, W/m^2
     RadianceRgb radiance{};       ///< B / pi, W/(m^2 sr)
-    IrradianceRgb irradiance{};   ///< gathered at the point, W/m^2
+    IrradianceRgb irradiance{};   ///< gathered at the point, W/m^2, the lights' direct part included
+    IrradianceRgb directIrradiance{};  ///< the punctual lights' part of it, W/m^2
     std::optional<TargetReading> target;
 };
 
@@ -88,7 +92,8 @@ public:
     [[nodiscard]] ProbeReading measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
                                        std::optional<std::size_t> targetSurface = std::nullopt) const;
 
-    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face.
+    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face, plus the lights'
+    /// direct irradiance at x.
     [[nodiscard]] IrradianceRgb irradiance(const SurfacePoint& at, const glm::dvec3& n,
                                            std::span<const Rgb> radiosity) const;
     /// Solid angle, projected solid angle and form factor of a surface from x, with visibility.
@@ -100,6 +105,7 @@ private:
     const RayCaster* rays_;
     ProbeOptions options_;
     PatchLocator locator_;
+    DirectLighting lighting_;
     double sceneSize_ = 1;
 };
 
