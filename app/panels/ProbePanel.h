@@ -53,6 +53,8 @@ public:
     [[nodiscard]] std::uint64_t readingGeneration() const { return readingGeneration_; }
     /// Chooses the target surface by index (the combo does this too).
     void setTarget(std::size_t surface);
+    /// The `radiant probe ...` line that repeats this reading (ProbeCommandLine.h); empty with no pick.
+    [[nodiscard]] std::string commandLine() const;
 
     /// Readings are refreshed at most this often while the solve runs.
     static constexpr std::chrono::milliseconds kRefreshInterval{250};
@@ -70,6 +72,7 @@ private:
     void drawReadings(const Scene& scene, const ProbeReading& reading);
     void drawTarget(const Scene& scene);
     void drawPathTraced(const ProbeReading& reading);
+    void drawCopyCommand();
     /// Starts the path tracer at the pick, or restarts it when the materials changed under it.
     void followPathTraced(const std::shared_ptr<const Snapshot>& snapshot);
 
@@ -87,6 +90,7 @@ private:
     std::chrono::steady_clock::time_point lastStart_{};
     PathTracedReading pathTraced_;  ///< last: its worker reads picker_'s rays
     bool pathTracedCurrent_ = false;  ///< pathTraced_ runs at pick_
+    bool copied_ = false;  ///< "Copy as command" was pressed for this pick
 };
 
 } // namespace radiant::app
