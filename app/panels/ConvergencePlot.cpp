@@ -90,7 +90,8 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
     // What the y axis shows: the quantities of the curves on it, all fractions of emitted power.
     std::set<std::string_view> quantities;
     std::size_t longest = 1;
-    std::vector<double> values{snapshot.tolerance};
+    // Half the tolerance: its line stays clear of the bottom edge, where its label would sit on the ticks.
+    std::vector<double> values{snapshot.tolerance, 0.5 * snapshot.tolerance};
     const auto plotWidthPixels = static_cast<std::size_t>(std::max(1.0f, width - left - right));
     for (const SegmentView& segment : segments) {
         quantities.insert(convergenceQuantity(segment.info->method).name);
@@ -110,7 +111,7 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
     const ui::LogAxis yAxis = ui::logAxisFor(values, maxYTicks, 2);
     const double xLow = 1, xHigh = std::max<double>(2, static_cast<double>(longest));
     const int maxXTicks = std::max(2, static_cast<int>((width - left) / (ImGui::CalcTextSize("00000").x + font)));
-    const std::vector<double> xTicks = ui::linearTicks(xLow, xHigh, maxXTicks);
+    const std::vector<double> xTicks = ui::linearTicks(xLow, xHigh, maxXTicks, 1.0);
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
@@ -146,7 +147,9 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
         char label[32];
         std::snprintf(label, sizeof label, "tolerance %.0e", snapshot.tolerance);
         const ImVec2 size = ImGui::CalcTextSize(label);
-        draw->AddText({hi.x - size.x - font * 0.2f, p.y - size.y - 1.0f}, kTolerance, label);
+        // At the left, where the curves are still high above it (they start near 1 and fall).
+        const float y = p.y - size.y - 1.0f < hi.y ? p.y + 1.0f : p.y - size.y - 1.0f;
+        draw->AddText({lo.x + font * 0.3f, y}, kTolerance, label);
     }
     draw->PushClipRect({lo.x, hi.y}, {hi.x, lo.y}, true);
     std::vector<ImVec2> points;

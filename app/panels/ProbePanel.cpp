@@ -219,8 +219,8 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     // its tolerance (and the exact value is one "Copy as command" away).
     const glm::dvec3& p = reading.at.point;
     char point[96];
-    std::snprintf(point, sizeof point, "%.6g, %.6g, %.6g m", p.x, p.y, p.z);
-    ImGui::TextDisabled("Point");
+    std::snprintf(point, sizeof point, "%.6g, %.6g, %.6g", p.x, p.y, p.z);
+    ImGui::TextDisabled("Point, m");
     ui::sameLineIfFits(ImGui::CalcTextSize(point).x);
     if (ImGui::GetCursorPosX() < ImGui::GetFontSize() * 6.0f) ImGui::SetCursorPosX(ImGui::GetFontSize() * 6.0f);
     ImGui::TextUnformatted(point);

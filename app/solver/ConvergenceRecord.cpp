@@ -38,7 +38,12 @@ void ConvergenceRecorder::restart(SolverMethod method) {
 }
 
 void ConvergenceRecorder::materialEdited(const std::string& surfaceName, bool continues) {
-    if (continues && current_.index > 0) return;
+    if (continues && current_.index > 0) {
+        // The steps since the gesture began solved for a value it has since left (a digit typed,
+        // a slider moved on): the segment shows the re-solve from its latest value only.
+        steps_.clear();
+        return;
+    }
     ++editsSinceLoad_;
     if (steps_.size() == 0) {
         // Nothing solved since the last cut: the coming steps start from the same solution.

@@ -65,9 +65,10 @@ public:
     /// `method` starts from B = E: its earlier segments go, the other methods' stay.
     void restart(SolverMethod method);
     /// A material of `surfaceName` changed: the steps from here on are a new segment of the same
-    /// method. Edits before the first step of a segment fold into it (its label names the last), and
-    /// so does an edit that `continues` the gesture which started the segment (a slider dragged
-    /// sends an edit a frame: one segment, not a hundred).
+    /// method. Edits before the first step of a segment fold into it (its label names the last). An
+    /// edit that `continues` the gesture which started the segment (a slider dragged sends an edit a
+    /// frame, a typed number one per digit) restarts that segment's steps: one curve per gesture,
+    /// the re-solve from its final value, neither a hundred segments nor a sawtooth inside one.
     void materialEdited(const std::string& surfaceName, bool continues = false);
     /// The materials are the scene's as loaded again, and `method` starts from B = E.
     void materialsRestored(SolverMethod method);

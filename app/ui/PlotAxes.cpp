@@ -34,13 +34,14 @@ LogAxis logAxisFor(std::span<const double> values, int maxTicks, int minDecades)
     return axis;
 }
 
-std::vector<double> linearTicks(double low, double high, int maxTicks) {
+std::vector<double> linearTicks(double low, double high, int maxTicks, double minStep) {
     if (!(high > low) || !std::isfinite(low) || !std::isfinite(high)) return {low};
     const int count = std::max(1, maxTicks);
     double magnitude = std::pow(10.0, std::floor(std::log10((high - low) / count)));
     for (;;) {
         for (const double mantissa : {1.0, 2.0, 5.0}) {
             const double step = mantissa * magnitude;
+            if (step < minStep) continue;
             const double first = std::ceil(low / step - 1e-9) * step;
             const auto n = static_cast<int>(std::floor((high - first) / step + 1e-9)) + 1;
             if (n <= count) {

@@ -19,7 +19,8 @@ struct LogAxis {
 [[nodiscard]] LogAxis logAxisFor(std::span<const double> values, int maxTicks, int minDecades = 1);
 
 /// Ticks at multiples of 1, 2 or 5 times a power of ten within [low, high], at most `maxTicks` of
-/// them (at least one: the step grows until they fit). high <= low gives {low}.
-[[nodiscard]] std::vector<double> linearTicks(double low, double high, int maxTicks);
+/// them (at least one: the step grows until they fit), the step at least `minStep` (1 for counts
+/// such as iterations, which have no tick between 1 and 2). high <= low gives {low}.
+[[nodiscard]] std::vector<double> linearTicks(double low, double high, int maxTicks, double minStep = 0);
 
 } // namespace radiant::app::ui

@@ -77,7 +77,7 @@ TEST_CASE("convergence record: choosing another method keeps the first one's run
     CHECK(shown(recorder).empty());
 }
 
-TEST_CASE("convergence record: a material edit starts a new labelled segment, and a drag stays one segment") {
+TEST_CASE("convergence record: a material edit starts a new labelled segment, and a drag stays one segment from its last value") {
     ConvergenceRecorder recorder(SolverMethod::GaussSeidel);
     appendSteps(recorder, 1, 6);
     recorder.materialEdited("light");
@@ -92,7 +92,7 @@ TEST_CASE("convergence record: a material edit starts a new labelled segment, an
     CHECK(segments[0].steps == 6);
     CHECK(segments[1].index == 1);
     CHECK(segments[1].label == "Gauss-Seidel, edit 1: light");
-    CHECK(segments[1].steps == 4);
+    CHECK(segments[1].steps == 2);  // from the drag's last value: no sawtooth inside the segment
     CHECK(segments[2].index == 2);
     CHECK(segments[2].label == "Gauss-Seidel, edit 2: left wall");
     CHECK(segments[2].steps == 4);
@@ -189,6 +189,7 @@ TEST_CASE("plot axes: linear ticks at 1-2-5 steps within the range") {
     CHECK(ui::linearTicks(1, 3000, 4) == std::vector<double>{1000, 2000, 3000});
     CHECK(ui::linearTicks(0, 1, 5) == std::vector<double>{0, 0.5, 1});
     CHECK(ui::linearTicks(4, 4, 5) == std::vector<double>{4});
+    CHECK(ui::linearTicks(1, 2, 5, 1.0) == std::vector<double>{1, 2});  // iterations: no 1.5
 }
 
 } // TEST_SUITE
