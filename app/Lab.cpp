@@ -113,7 +113,7 @@ struct Lab::State {
         probePanel = probe.get();
         sidebar.add(std::move(scene));
         sidebar.add(std::make_unique<SolverPanel>(live));
-        sidebar.add(std::make_unique<MaterialsPanel>(live));
+        sidebar.add(std::make_unique<MaterialsPanel>(live, [this] { return probePanel->picked(); }));
         sidebar.add(std::move(probe));
         sidebar.add(std::make_unique<DisplayPanel>(display, [this] { return patches->legend(); }));
         sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote()));

@@ -1,7 +1,9 @@
 // `radiant probe SCENE --point X,Y,Z --normal X,Y,Z [--target SURFACE]`: solve the scene, then read
 // radiosity, radiance, irradiance and a target surface's solid angle and form factor at one point
 // (radiometry/probe/Probe.h), printed as the JSON of docs/ARCHITECTURE. --photometric adds lx and
-// cd/m^2 by Radiance's convention (radiometry/units/Photometry.h).
+// cd/m^2 by Radiance's convention (radiometry/units/Photometry.h). A point within 1 mm of a surface
+// (a reading copied with too few digits) is moved onto it, with a warning on stderr and in the
+// JSON's "warnings".
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ProbeCommandLine.h"
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
@@ -27,6 +30,9 @@
 namespace radiant::app {
 
 namespace {
+
+/// m: farther than this from every surface, a point is refused rather than moved.
+constexpr double kSnapDistance = 1e-3;
 
 struct ProbeCommandOptions {
     std::string scene;
@@ -80,7 +86,19 @@ int runProbe(const ProbeCommandOptions& options) {
     const PatchMesh mesh = meshScene(scene, meshing);
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
-    const SurfacePoint at = probe.locate(point, normal);  // bad input fails before the long solve
+    std::vector<std::string> warnings = scene.warnings;
+    glm::dvec3 onSurface = point;
+    if (const std::optional<SurfaceSnap> snap = probe.snapOntoSurface(point, kSnapDistance)) {
+        char distance[32];
+        std::snprintf(distance, sizeof distance, "%.3g", snap->distance);
+        const std::string warning = "--point: (" + roundTripVector(point) + ") lies " + distance + " m off '" +
+                                    scene.surfaces[snap->surface].name + "'; moved onto it, to (" +
+                                    roundTripVector(snap->point) + ")";
+        std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+        warnings.push_back(warning);
+        onSurface = snap->point;
+    }
+    const SurfacePoint at = probe.locate(onSurface, normal);  // bad input fails before the long solve
 
     std::vector<Rgb> radiosity;
     std::string solution;
@@ -135,7 +153,7 @@ int runProbe(const ProbeCommandOptions& options) {
                          {"unoccluded_solid_angle_sr", t.unoccludedSolidAngle.value()},
                          {"unoccluded_form_factor", t.unoccludedFormFactor}};
     }
-    out["warnings"] = scene.warnings;
+    out["warnings"] = warnings;
 
     writeText(options.json, out.dump(2) + "\n", "--json");
     return 0;

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/cli/ProbeCommandLine.h"
 #include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
@@ -87,6 +88,7 @@ bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     error_.clear();
     dirty_ = true;
     pathTracedCurrent_ = false;
+    copied_ = false;
     return true;
 }
 
@@ -214,8 +216,17 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     std::snprintf(patch, sizeof patch, "patch %zu", reading.at.patch);
     ui::sameLineIfFits(ImGui::CalcTextSize(patch).x);
     ImGui::TextDisabled("%s", patch);
-    row("Point", "m", reading.at.point);
+    // Six significant digits: typed back into `radiant probe`, the point lies on the surface within
+    // its tolerance (and the exact value is one "Copy as command" away).
+    const glm::dvec3& p = reading.at.point;
+    char point[96];
+    std::snprintf(point, sizeof point, "%.6g, %.6g, %.6g", p.x, p.y, p.z);
+    ImGui::TextDisabled("Point, m");
+    ui::sameLineIfFits(ImGui::CalcTextSize(point).x);
+    if (ImGui::GetCursorPosX() < ImGui::GetFontSize() * 6.0f) ImGui::SetCursorPosX(ImGui::GetFontSize() * 6.0f);
+    ImGui::TextUnformatted(point);
     row("Normal", "", reading.normal);
+    drawCopyCommand();
     ImGui::Spacing();
     ImGui::TextDisabled("per band: red  green  blue");
     row("E", "W/m\xC2\xB2", reading.irradiance.value());
@@ -247,6 +258,42 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
             ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
     }
     drawPathTraced(reading);
+}
+
+std::string ProbePanel::commandLine() const {
+    const Snapshot& snapshot = live_.snapshot();
+    if (!pick_ || !snapshot.scene) return {};
+    ProbeCommandInputs inputs;
+    inputs.scene = snapshot.scene->name;
+    inputs.point = pick_->point;
+    inputs.normal = pick_->normal;
+    if (target_ && *target_ < snapshot.scene->surfaces.size()) inputs.target = snapshot.scene->surfaces[*target_].name;
+    inputs.method = snapshot.method;
+    inputs.maxPatchArea = snapshot.meshing.maxPatchArea;
+    inputs.tolerance = snapshot.tolerance;
+    if (methodInfo(snapshot.method).traits.links) inputs.linkTolerance = snapshot.linkTolerance;
+    return probeCommandLine(inputs);
+}
+
+void ProbePanel::drawCopyCommand() {
+    if (ImGui::SmallButton("Copy as command")) {
+        const std::string line = commandLine();
+        ImGui::SetClipboardText(line.c_str());
+        copied_ = true;
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetNextWindowSize({ImGui::GetFontSize() * 30.0f, 0});
+        ImGui::BeginTooltip();
+        ImGui::TextWrapped("Puts this reading's `radiant probe` line on the clipboard (exact point, method, mesh, "
+                           "tolerance):\n%s", commandLine().c_str());
+        if (methodInfo(live_.snapshot().method).traits.viewDependent)
+            ImGui::TextWrapped("Importance: the command line refines for the scene's home view, not this camera.");
+        ImGui::EndTooltip();
+    }
+    if (copied_) {
+        ui::sameLineIfFits(ImGui::CalcTextSize("copied").x);
+        ImGui::TextColored(theme::kDoneGreen, "copied");
+    }
 }
 
 void ProbePanel::drawPathTraced(const ProbeReading& reading) {

@@ -50,6 +50,13 @@ struct SurfacePoint {
     glm::dvec3 point{0.0};  ///< projected onto the face's plane
 };
 
+/// A point moved onto the nearest surface (Probe::snapOntoSurface).
+struct SurfaceSnap {
+    glm::dvec3 point{0.0};   ///< on the face
+    double distance = 0;     ///< m, how far it moved
+    std::uint32_t surface = 0;
+};
+
 struct TargetReading {
     std::size_t surface = 0;
     std::string name;
@@ -84,6 +91,12 @@ public:
     /// normal agrees best with n. Throws RadiantError naming the point (and the nearest surface) when
     /// x lies on no surface, or when n points into the surface it lies on.
     [[nodiscard]] SurfacePoint locate(const glm::dvec3& x, const glm::dvec3& n) const;
+
+    /// For a point off every surface (beyond locate's tolerance) but within `maxDistance` (m) of a
+    /// face: the nearest point of the nearest face, which locate accepts. nullopt when x already lies
+    /// on a surface, or lies farther than maxDistance from every face. A point typed with a few
+    /// digits too few (a copied reading) is meant, not one a millimetre away in mid-air.
+    [[nodiscard]] std::optional<SurfaceSnap> snapOntoSurface(const glm::dvec3& x, double maxDistance) const;
 
     /// Every reading at x with normal n; `radiosity` is the solver's per-patch solution (W/m^2).
     [[nodiscard]] ProbeReading measure(const glm::dvec3& x, const glm::dvec3& n, std::span<const Rgb> radiosity,
