@@ -1,6 +1,7 @@
 #include "radiometry/scene/EnergyBalance.h"
 
 #include <algorithm>
+#include <glm/common.hpp>
 #include <string>
 
 #include "radiometry/common/Error.h"
