@@ -315,6 +315,7 @@ struct Lab::State {
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
+        patches->prepare();
         patches->draw(lastCamera, viewport.aspect());
         drawProbeMarker(height);  // before other overlays: only the scene hides it
         hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene

@@ -1,5 +1,5 @@
 #pragma once
-// How radiosity is shown: the knobs of the Display panel, read by PatchRenderer::draw. Plain values,
+// How radiosity is shown: the knobs of the Display panel, read by render/display/DisplayModel. Plain values,
 // GL-free, owned by the lab and edited in place by the panel.
 namespace radiant::render {
 

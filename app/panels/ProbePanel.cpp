@@ -79,11 +79,11 @@ bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     if (!snapshot->scene || !snapshot->mesh) return false;
     if (!picker_ || picker_->meshGeneration != snapshot->meshGeneration)
         picker_ = std::make_shared<const Picker>(snapshot->scene, snapshot->meshGeneration);
-    const std::optional<RayHit> hit = picker_->rays.intersect(origin, direction);
+    // The view draws faces from their fronts only (a closed room's near walls are open): a click
+    // means the first face it shows, whose front faces the viewer.
+    const std::optional<RayHit> hit = picker_->rays.intersectFront(origin, direction);
     if (!hit) return false;
-    // A face seen from behind is probed on its back: the detector faces the viewer.
-    const glm::dvec3 normal = glm::dot(hit->normal, direction) > 0 ? -hit->normal : hit->normal;
-    pick_ = ProbePick{hit->point, normal, hit->surface, hit->face, snapshot->meshGeneration};
+    pick_ = ProbePick{hit->point, hit->normal, hit->surface, hit->face, snapshot->meshGeneration};
     reading_.reset();
     error_.clear();
     dirty_ = true;
