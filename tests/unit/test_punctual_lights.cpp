@@ -3,7 +3,7 @@
 // shadow, the candela and lux conversion at 179 lm/W, and the refusal of a scene nothing lights.
 // Closed forms: a black room (the probe reads the light alone), a room whose only reflector is the
 // floor (its power is rho I Omega, Omega the floor's solid angle from the bulb, the corner-rectangle
-// formula of oracles.md), and a closed grey room (all of the bulb's 4 pi I is absorbed, so
+// formula of docs/reference.md), and a closed grey room (all of the bulb's 4 pi I is absorbed, so
 // sum A B = rho / (1 - rho) 4 pi I); the grey room is also checked against the reference tracer.
 #include <doctest/doctest.h>
 
@@ -47,7 +47,7 @@ constexpr std::array kMethods{SolverMethod::Jacobi, SolverMethod::GaussSeidel, S
 constexpr double kBulbIntensity = 1.0;
 const glm::dvec3 kBulb{0.5, 2, 0};
 
-/// Solid angle of an a x b rectangle seen from height h above one corner (oracles.md).
+/// Solid angle of an a x b rectangle seen from height h above one corner (docs/reference.md).
 double cornerRectangleSolidAngle(double a, double b, double h) {
     return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h)));
 }
