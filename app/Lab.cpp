@@ -112,10 +112,11 @@ struct Lab::State {
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
         scenePanel = scene.get();
         auto probe = std::make_unique<ProbePanel>(live);
+        probe->followUnits(display);
         probePanel = probe.get();
         sidebar.add(std::move(scene));
         sidebar.add(std::make_unique<SolverPanel>(live));
-        sidebar.add(std::make_unique<MaterialsPanel>(live));
+        sidebar.add(std::make_unique<MaterialsPanel>(live, [this] { return probePanel->picked(); }));
         sidebar.add(std::move(probe));
         sidebar.add(std::make_unique<DisplayPanel>(display, [this] { return patches->legend(); }));
         sidebar.add(std::make_unique<InfoPanel>(frames, gl, window.fallbackNote()));
@@ -330,6 +331,7 @@ struct Lab::State {
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
+        patches->prepare();
         patches->draw(lastCamera, viewport.aspect());
         drawProbeMarker(height);  // before other overlays: only the scene hides it
         hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene

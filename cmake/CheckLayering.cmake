@@ -34,6 +34,20 @@ foreach(layer radiometry render)
   endforeach()
 endforeach()
 
+# render/display/, the display model, decides every colour without GL so tests/unit checks it with no
+# context: no GL header, nothing of render/gl/.
+file(GLOB_RECURSE display_sources RELATIVE "${RADIANT_SOURCE_DIR}" "${RADIANT_SOURCE_DIR}/render/display/*.h"
+     "${RADIANT_SOURCE_DIR}/render/display/*.cpp")
+foreach(source IN LISTS display_sources)
+  file(STRINGS "${RADIANT_SOURCE_DIR}/${source}" includes REGEX "^[ \t]*#[ \t]*include[ \t]*[<\"]")
+  foreach(line IN LISTS includes)
+    string(REGEX REPLACE "^[ \t]*#[ \t]*include[ \t]*[<\"]([^>\"]*)[>\"].*$" "\\1" header "${line}")
+    if(header MATCHES "${gl_headers}|^render/gl/|^render/PatchRenderer")
+      list(APPEND violations "${source} includes ${header} (render/display/ is GL-free)")
+    endif()
+  endforeach()
+endforeach()
+
 if(violations)
   list(JOIN violations "\n  " listing)
   message(FATAL_ERROR "layering: radiometry/ may not include GL, GLFW, ImGui, render/ or app/; render/ may "

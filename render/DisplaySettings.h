@@ -1,5 +1,5 @@
 #pragma once
-// How radiosity is shown: the knobs of the Display panel, read by PatchRenderer::draw. Plain values,
+// How radiosity is shown: the knobs of the Display panel, read by render/display/DisplayModel. Plain values,
 // GL-free, owned by the lab and edited in place by the panel.
 namespace radiant::render {
 
@@ -51,6 +51,8 @@ struct DisplaySettings {
     bool showImportance = false;  ///< per-patch importance as a magenta tint
     /// ImGui text and spacing scale (projectors want 1.5-2); the lab applies it to its ImGuiLayer.
     float uiScale = 1.0f;
+    /// Readouts also in photometric units (lx, cd/m^2) by Radiance's convention (Photometry.h).
+    bool photometric = false;
 
     static constexpr int kLogDecades = 3;
 };

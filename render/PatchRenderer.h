@@ -1,11 +1,11 @@
 #pragma once
-// Radiosity on screen: draws the patch mesh coloured by the newest per-patch radiosity (tone-mapped
-// or false colour), smooth (Gouraud across each surface's conforming mesh) or flat, with overlays
-// (wireframe, last shooter, changed patches, hierarchical links, importance). Streaming is cheap:
-// geometry is uploaded when the mesh generation changes; display colours are worked out on the CPU
-// when the solution generation, the exposure key or a colour setting changes, nothing otherwise,
-// and uploaded as light-map texels for faces meshed as grids (FaceGrids.h: one quad per face) and
-// as vertex colours for the other patches' triangles.
+// Radiosity on screen: the GL drawer of the display model (render/display/DisplayModel.h, which
+// decides every colour, tint, key and legend without GL). It holds the patch mesh on the GPU
+// (triangles, and one light-mapped quad per grid face: render/display/FaceGrids.h), the display
+// colours as vertex attributes and atlas texels, the hierarchical links as lines, and draws them with
+// back faces culled (a face is seen from its front only, so a closed room's near walls vanish).
+// Geometry is uploaded when the mesh generation changes; colours when prepare() finds the model
+// recoloured (new solution, exposure key, a colour setting); nothing otherwise.
 // GL-free header; GL objects live in the implementation. Create, use and destroy on the GL thread.
 #include <cstdint>
 #include <glm/vec3.hpp>
@@ -19,12 +19,13 @@
 #include "render/ColourScale.h"
 #include "render/DisplaySettings.h"
 #include "render/SceneRenderer.h"
+#include "render/display/DisplayModel.h"
 
 namespace radiant::render {
 
 class PatchRenderer final : public SceneRenderer {
 public:
-    /// Compiles the shaders; draws nothing until setMesh. Needs a current GL context.
+    /// Compiles the common shader variant; draws nothing until setMesh. Needs a current GL context.
     PatchRenderer();
     ~PatchRenderer() override;
     PatchRenderer(PatchRenderer&&) noexcept;
@@ -32,20 +33,18 @@ public:
     PatchRenderer(const PatchRenderer&) = delete;
     PatchRenderer& operator=(const PatchRenderer&) = delete;
 
-    /// Uploads the mesh's triangles (and the materials' colours) when meshGeneration differs from the
-    /// last call's; otherwise returns at once. Clears radiosity, importance and links.
+    // The setters change the model (and upload geometry or lines); prepare() brings the GPU's colours
+    // up to date before draw.
+
+    /// Uploads the mesh's triangles and grid quads when meshGeneration differs from the last call's;
+    /// otherwise returns at once. Clears radiosity, importance and links (DisplayModel::setMesh).
     void setMesh(const Scene& scene, const PatchMesh& mesh, std::uint64_t meshGeneration);
-    /// Per-patch colours shown while there is no radiosity: reflectance, emitters at their exitance's
-    /// chromaticity. Cheap; call when a material changes. The energy-balance exposure key is derived
-    /// again only with `rekey` (setMesh does): a material edit keeps it, so the picture shows the
-    /// change in light.
+    /// DisplayModel::setMaterials: a material edit keeps the exposure key unless `rekey`.
     void setMaterials(const Scene& scene, bool rekey = false);
-    /// Per-patch radiosity in W/m^2, indexed like the mesh's patches (size must match, else throws
-    /// RadiantError); uploaded only when `generation` differs from the last call's. An empty span
-    /// means "no solution yet". `shooter` is the patch shot in the last step, or -1.
+    /// DisplayModel::setRadiosity (W/m^2 per patch; wrong size throws RadiantError). `shooter` is
+    /// the patch shot in the last step, or -1.
     void setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_t generation, std::int64_t shooter = -1);
-    /// Per-patch importance (any non-negative scale; shown relative to its maximum) for the
-    /// importance tint. Null clears it; the pointer of the last call costs nothing.
+    /// DisplayModel::setImportance.
     void setImportance(std::shared_ptr<const std::vector<double>> importance);
     /// Line segments (pairs of ends, metres) drawn when settings().showLinks: the hierarchical
     /// links. Null clears them; uploaded only when the pointer differs from the last call's.
@@ -53,33 +52,32 @@ public:
     /// The links a picked point gathers through, drawn bright over the others when links are shown
     /// (the others fade further). Null clears them; uploaded only when the pointer changes.
     void setFocusLinks(std::shared_ptr<const std::vector<glm::vec3>> segmentEnds);
-
     void setSettings(const DisplaySettings& settings);
-    [[nodiscard]] const DisplaySettings& settings() const;
+    [[nodiscard]] const DisplaySettings& settings() const { return model_.settings(); }
 
+    /// Recolours (DisplayModel::refreshColours) and uploads what changed: colour attributes, atlas
+    /// texels, the shooter's outline cell; compiles the shader variants the settings need. Cheap when
+    /// nothing changed. Call after the setters and before draw.
+    void prepare();
+    /// Draws what prepare() uploaded; changes no state of the renderer (an InvariantError when a
+    /// setter ran since prepare()).
     void draw(const Camera& camera, double aspect) const override;
 
-    /// The range false colour maps with the current settings and data (for the legend).
-    [[nodiscard]] ColourLegend legend() const;
-    /// Radiosity (W/m^2) the tone map's exposure 0 shows as a middle tone, as settings().exposureKey
-    /// asks (the automatic key where that mode has nothing to key on: no emitters, never re-keyed).
-    [[nodiscard]] double exposureKeyW_m2() const;
-    /// The area-weighted mean luminance of the lit non-emitting patches now (1 before any solution).
-    [[nodiscard]] double automaticExposureKeyW_m2() const;
-    /// Multiplier applied to radiosity before the tone curve: 2^stops * 0.35 / exposureKeyW_m2().
-    [[nodiscard]] double exposureScale() const;
-
-    [[nodiscard]] std::size_t patchCount() const;
-    [[nodiscard]] bool hasRadiosity() const;
-    /// How many times radiosity was actually uploaded (tests check that unchanged generations skip it).
-    [[nodiscard]] std::uint64_t radiosityUploads() const;
+    [[nodiscard]] const DisplayModel& model() const { return model_; }
+    [[nodiscard]] ColourLegend legend() const { return model_.legend(); }
+    [[nodiscard]] double exposureKeyW_m2() const { return model_.exposureKeyW_m2(); }
+    [[nodiscard]] double automaticExposureKeyW_m2() const { return model_.automaticExposureKeyW_m2(); }
+    [[nodiscard]] double exposureScale() const { return model_.exposureScale(); }
+    [[nodiscard]] std::size_t patchCount() const { return model_.patchCount(); }
+    [[nodiscard]] bool hasRadiosity() const { return model_.hasRadiosity(); }
+    /// How many solutions were taken (tests check that unchanged generations skip it).
+    [[nodiscard]] std::uint64_t radiosityUploads() const { return model_.radiosityUpdates(); }
 
 private:
-    /// Redoes the per-patch and per-vertex display colours when the data or the settings changed.
-    void refreshColours() const;
-
-    struct State;
-    std::unique_ptr<State> state_;
+    DisplayModel model_;
+    bool prepared_ = false;
+    struct Gpu;
+    std::unique_ptr<Gpu> gpu_;
 };
 
 } // namespace radiant::render

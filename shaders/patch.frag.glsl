@@ -27,9 +27,6 @@ flat in int outlined;
 #endif
 
 uniform int wireframe;
-#ifdef TWO_SIDED
-in float behind;  // > 0: this side of a two-sided face is seen from behind (patch.vert.glsl)
-#endif
 
 out vec4 fragColour;
 
@@ -52,9 +49,6 @@ vec3 viridis(float t) {
 #endif
 
 void main() {
-#ifdef TWO_SIDED
-    if (behind > 0.0) discard;  // the twin facing the eye is drawn here
-#endif
 #ifdef LIGHT_MAP
     ivec2 cell = ivec2(clamp(floor(gridCoordinate), vec2(0.0), layoutOfGrid.yz - 1.0)) + ivec2(0, int(layoutOfGrid.x));
     // One lookup per pixel: each is a good part of what software GL spends on a pixel.
@@ -71,7 +65,7 @@ void main() {
 #else
     vec4 tintAndOutline = vec4(0.0);  // no patch is tinted or outlined
 #endif
-    // 8-bit texels: alpha = amount / 2, + 1/2 when outlined (PatchRenderer's tint atlas).
+    // 8-bit texels: alpha = amount / 2, + 1/2 when outlined (tintTexel, render/display/DisplayBuffers.h).
     int outlined = tintAndOutline.a >= 0.5 ? 1 : 0;
     vec4 tint = vec4(tintAndOutline.rgb, 2.0 * (tintAndOutline.a - 0.5 * float(outlined)));
 #endif

@@ -1,19 +1,15 @@
 #version 330 core
 // Patch triangles in world space (metres). Display colours arrive ready-made as vertex attributes
-// (PatchRenderer works them out on the CPU when the radiosity or the display settings change:
+// (render/display/DisplayModel works them out on the CPU when the radiosity or the display settings change:
 // ACES-fitted tone curve and sRGB encoding, or the position on the colour map): software GL
 // (llvmpipe) runs shaders on the CPU, where a pow() or a buffer-texture fetch per vertex or pixel
 // per frame cost several times the whole frame. Smooth shading is Gouraud's: the colours of the
 // per-vertex radiosity interpolated across the conforming mesh; flat shading gives a patch's
 // vertices its own colour.
-// LIGHT_MAP: a grid face (render/FaceGrids.h) drawn as one quad; its colours come per pixel from
+// LIGHT_MAP: a grid face (render/display/FaceGrids.h) drawn as one quad; its colours come per pixel from
 // atlas textures (patch.frag.glsl), so this passes on only the grid coordinates.
-// TWO_SIDED: a normal of length 2 marks a face that is one of two coincident sides (PatchRenderer's
-// sidedNormal); `behind` > 0 where it is seen from behind, and the fragment shader drops it there so
-// its twin, facing the eye, shows.
-#ifdef TWO_SIDED
-out float behind;
-#endif
+// Back faces are culled (PatchRenderer): every face drawn is seen from its front, the side its
+// normal points to, so two coincident sides of a two-sided face need no test here.
 #ifdef LIGHT_MAP
 layout(location = 0) in vec3 position;
 layout(location = 2) in vec3 normal;      // the face's, unit
@@ -30,14 +26,10 @@ flat out vec3 layoutOfGrid;
 out float shade;
 
 void main() {
-#ifdef TWO_SIDED
-    behind = dot(normal, normal) > 2.0 ? dot(normal, position - eye) : -1.0;
-#endif
     shade = 1.0;
     if (hasRadiosity == 0) {
         vec3 toEye = normalize(eye - position);
-        vec3 unitNormal = normalize(normal);
-        vec3 n = dot(unitNormal, toEye) < 0.0 ? -unitNormal : unitNormal;
+        vec3 n = normalize(normal);
         shade = 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
     }
     gridCoordinate = grid;
@@ -66,16 +58,12 @@ out vec3 edge;
 flat out int outlined;
 
 void main() {
-#ifdef TWO_SIDED
-    behind = dot(normal, normal) > 2.0 ? dot(normal, position - eye) : -1.0;
-#endif
     displayColour = colour.rgb;
     if (hasRadiosity == 0) {
         // No solution yet: the materials, dimmed where the face turns away (a display aid, so the
         // dimming acts on the encoded colour).
         vec3 toEye = normalize(eye - position);
-        vec3 unitNormal = normalize(normal);
-        vec3 n = dot(unitNormal, toEye) < 0.0 ? -unitNormal : unitNormal;
+        vec3 n = normalize(normal);
         displayColour *= 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
     }
     legendT = colour.a;

@@ -5,7 +5,9 @@
 // the readout refreshed four times a second). Medians and 99th percentiles, against issue #6's
 // target. First, the lab as a lecturer opens it (default method and tolerance, a finer mesh) from
 // start to convergence, frames paced at 60 Hz as vsync would, without other load and with every core
-// kept busy by other processes (issue #17: background load must not stop the solve).
+// kept busy by other processes (issue #17: background load must not stop the solve). Last, the lab
+// left alone once converged, in the window's own loop: the share of a core it uses (issue #15: under
+// 5%, so an idle lab on a lecture-hall laptop does not spin the fan).
 #include <algorithm>
 #include <atomic>
 #include <chrono>
@@ -19,6 +21,7 @@
 
 #include <signal.h>
 #include <sys/prctl.h>
+#include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -191,6 +194,80 @@ Convergence convergeWhileDrawing() {
 
 std::string ms(double seconds) { return formatNumber(seconds * 1e3); }
 
+/// Idle converged lab: the share of one core it may use.
+constexpr double kIdleCpuTarget = 0.05;
+constexpr auto kIdleSettle = std::chrono::seconds(1);
+constexpr auto kIdleMeasured = std::chrono::seconds(5);
+
+/// User plus system CPU time of every thread of the process so far (s).
+double processCpuSeconds() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    const auto seconds = [](const timeval& t) { return static_cast<double>(t.tv_sec) + static_cast<double>(t.tv_usec) * 1e-6; };
+    return seconds(usage.ru_utime) + seconds(usage.ru_stime);
+}
+
+struct IdleRun {
+    bool converged = false;
+    double cpuShare = 0;  ///< process CPU time / wall time, over kIdleMeasured
+    std::uint64_t frames = 0;
+    std::size_t patches = 0;
+    std::string method;
+};
+
+/// The lab as a lecturer opens it (default scene, method, mesh and tolerance, running on start),
+/// converged and then untouched: the window's loop (Lab::frameWhenNeeded) runs as in `radiant`, and
+/// the process's CPU time over kIdleMeasured of wall time, after kIdleSettle, is its share of a core.
+IdleRun idleConvergedLab() {
+    LabOptions labOptions;
+    labOptions.width = kWidth;
+    labOptions.height = kHeight;
+    IdleRun run;
+    Lab lab(labOptions);
+    run.converged = frameUntil(lab, [](const Snapshot& s) {
+        return s.solverBuilds > 0 && s.stats.iteration > 0 && !s.running && s.stats.residual < s.tolerance;
+    });
+    if (!run.converged) return run;
+    const auto loopFor = [&](std::chrono::steady_clock::duration wall) {
+        const auto end = std::chrono::steady_clock::now() + wall;
+        while (std::chrono::steady_clock::now() < end) lab.frameWhenNeeded();
+    };
+    loopFor(kIdleSettle);  // the last frames of the solve, and the wake-up after them
+    const double cpuBefore = processCpuSeconds();
+    const std::uint64_t framesBefore = lab.frameCount();
+    const auto started = std::chrono::steady_clock::now();
+    loopFor(kIdleMeasured);
+    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+    run.cpuShare = (processCpuSeconds() - cpuBefore) / wall;
+    run.frames = lab.frameCount() - framesBefore;
+    const std::shared_ptr<const Snapshot> s = lab.snapshot();
+    run.patches = s->mesh ? s->mesh->size() : 0;
+    run.method = std::string(methodName(s->method));
+    return run;
+}
+
+void measureIdleCpu(BenchTable& table) {
+    const IdleRun idle = idleConvergedLab();
+    if (!idle.converged) {
+        table.notes.push_back("idle converged lab: skipped, the lab did not converge within 120 s");
+        return;
+    }
+    const double seconds = std::chrono::duration<double>(kIdleMeasured).count();
+    std::vector<std::string> row(table.columns.size());
+    row[0] = "none";
+    row[1] = "converged (" + idle.method + ", " + std::to_string(idle.patches) + " patches), untouched, window loop";
+    row[2] = std::to_string(idle.frames);
+    row[6] = ms(idle.cpuShare * seconds / std::max<double>(1.0, static_cast<double>(idle.frames)));
+    row[10] = "CPU " + formatNumber(idle.cpuShare * 100) + "% of a core (< " + formatNumber(kIdleCpuTarget * 100) +
+              "%): " + (idle.cpuShare < kIdleCpuTarget ? "met" : "missed");
+    table.rows.push_back(std::move(row));
+    table.notes.push_back("Idle converged lab: the lab as it opens (default scene, method, mesh, tolerance), left alone "
+                          "once converged; Lab::frameWhenNeeded as the window's loop runs it, " +
+                          formatNumber(seconds) + " s measured after " +
+                          formatNumber(std::chrono::duration<double>(kIdleSettle).count()) +
+                          " s to settle; CPU = the process's user + system time (getrusage, every thread) over wall time.");
+}
+
 std::string verdict(double runningP99, double idleP99) {
     std::string text;
     if (runningP99 > kTargetP99Seconds)
@@ -254,6 +331,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     const int frames = options.quick ? 60 : 300;
     // First, and on its own: the lab below must not exist (a second window) while these run.
     measureConvergence(table);
+    measureIdleCpu(table);
 
     LabOptions labOptions;
     labOptions.width = kWidth;

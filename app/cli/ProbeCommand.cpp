@@ -1,6 +1,9 @@
 // `radiant probe SCENE --point X,Y,Z --normal X,Y,Z [--target SURFACE]`: solve the scene, then read
 // radiosity, radiance, irradiance and a target surface's solid angle and form factor at one point
-// (radiometry/probe/Probe.h), printed as the JSON of docs/ARCHITECTURE.
+// (radiometry/probe/Probe.h), printed as the JSON of docs/ARCHITECTURE. --photometric adds lx and
+// cd/m^2 by Radiance's convention (radiometry/units/Photometry.h). A point within 1 mm of a surface
+// (a reading copied with too few digits) is moved onto it, with a warning on stderr and in the
+// JSON's "warnings".
 #include <CLI/CLI.hpp>
 #include <cmath>
 #include <cstdio>
@@ -14,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/ProbeCommandLine.h"
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
@@ -21,10 +25,14 @@
 #include "radiometry/probe/Probe.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
+#include "radiometry/units/Photometry.h"
 
 namespace radiant::app {
 
 namespace {
+
+/// m: farther than this from every surface, a point is refused rather than moved.
+constexpr double kSnapDistance = 1e-3;
 
 struct ProbeCommandOptions {
     std::string scene;
@@ -38,9 +46,11 @@ struct ProbeCommandOptions {
     double linkTolerance = SolverOptions{}.linkEpsilon;
     ViewArguments view{"", "", 0, "--look-at"};  // --target names the measured surface
     std::string json = "-";
+    bool photometric = false;
 };
 
-std::size_t chooseTarget(const Scene& scene, const std::string& name) {
+/// The named surface, else the first emitting one; none for a scene lit only by punctual lights.
+std::optional<std::size_t> chooseTarget(const Scene& scene, const std::string& name) {
     if (!name.empty()) {
         const std::size_t found = scene.findSurface(name);
         if (found == Scene::npos) {
@@ -52,6 +62,7 @@ std::size_t chooseTarget(const Scene& scene, const std::string& name) {
     }
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s)
         if (scene.materials.at(scene.surfaces[s].material).emits()) return s;
+    if (!scene.lights.empty()) return std::nullopt;
     throw RadiantError({scene.name, "--target"}, "the scene has no emitting surface; name a target");
 }
 
@@ -69,13 +80,25 @@ int runProbe(const ProbeCommandOptions& options) {
     const SolverMethod method = parseMethod(options.method);
 
     const Scene scene = loadSceneArgument(options.scene);
-    const std::size_t target = chooseTarget(scene, options.target);
+    const std::optional<std::size_t> target = chooseTarget(scene, options.target);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
     const PatchMesh mesh = meshScene(scene, meshing);
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
-    const SurfacePoint at = probe.locate(point, normal);  // bad input fails before the long solve
+    std::vector<std::string> warnings = scene.warnings;
+    glm::dvec3 onSurface = point;
+    if (const std::optional<SurfaceSnap> snap = probe.snapOntoSurface(point, kSnapDistance)) {
+        char distance[32];
+        std::snprintf(distance, sizeof distance, "%.3g", snap->distance);
+        const std::string warning = "--point: (" + roundTripVector(point) + ") lies " + distance + " m off '" +
+                                    scene.surfaces[snap->surface].name + "'; moved onto it, to (" +
+                                    roundTripVector(snap->point) + ")";
+        std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
+        warnings.push_back(warning);
+        onSurface = snap->point;
+    }
+    const SurfacePoint at = probe.locate(onSurface, normal);  // bad input fails before the long solve
 
     std::vector<Rgb> radiosity;
     std::string solution;
@@ -114,14 +137,23 @@ int runProbe(const ProbeCommandOptions& options) {
     out["patch_radiosity_W_m2"] = rgbJson(reading.patchRadiosity.value());
     out["radiance_W_m2_sr"] = rgbJson(reading.radiance.value());
     out["irradiance_W_m2"] = rgbJson(reading.irradiance.value());
-    const TargetReading& t = *reading.target;
-    out["target"] = {{"name", t.name},
-                     {"solid_angle_sr", t.solidAngle.value()},
-                     {"projected_solid_angle_sr", t.projectedSolidAngle.value()},
-                     {"form_factor", t.formFactor},
-                     {"unoccluded_solid_angle_sr", t.unoccludedSolidAngle.value()},
-                     {"unoccluded_form_factor", t.unoccludedFormFactor}};
-    out["warnings"] = scene.warnings;
+    out["direct_irradiance_W_m2"] = rgbJson(reading.directIrradiance.value());
+    if (options.photometric) {
+        out["illuminance_lx"] = illuminanceLux(reading.irradiance);
+        out["direct_illuminance_lx"] = illuminanceLux(reading.directIrradiance);
+        out["luminance_cd_m2"] = luminanceCdPerM2(reading.radiance);
+        out["photometric_convention"] = "179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B (Radiance)";
+    }
+    if (reading.target) {
+        const TargetReading& t = *reading.target;
+        out["target"] = {{"name", t.name},
+                         {"solid_angle_sr", t.solidAngle.value()},
+                         {"projected_solid_angle_sr", t.projectedSolidAngle.value()},
+                         {"form_factor", t.formFactor},
+                         {"unoccluded_solid_angle_sr", t.unoccludedSolidAngle.value()},
+                         {"unoccluded_form_factor", t.unoccludedFormFactor}};
+    }
+    out["warnings"] = warnings;
 
     writeText(options.json, out.dump(2) + "\n", "--json");
     return 0;
@@ -135,7 +167,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
     sub->add_option("--point", options->point, "X,Y,Z on a surface, metres")->required();
     sub->add_option("--normal", options->normal, "X,Y,Z: the probe's facing direction")->required();
-    sub->add_option("--target", options->target, "surface to measure (default: the first emitting surface)");
+    sub->add_option("--target", options->target, "surface to measure (default: the first emitting surface; none in a scene lit only by lights)");
     sub->add_option("--method", options->method, methodNameList())
         ->capture_default_str();
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
@@ -144,6 +176,8 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
+    sub->add_flag("--photometric", options->photometric,
+                  "Also give illuminance_lx and luminance_cd_m2 (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B, Radiance's convention)");
     return {sub, [options] { return runProbe(*options); }};
 }
 

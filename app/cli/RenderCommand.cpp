@@ -135,6 +135,7 @@ int runRender(const RenderOptions& options) {
     settings.wireframe = options.wireframe;
     settings.highlightShooter = false;
     renderer.setSettings(settings);
+    renderer.prepare();
     const render::ImageRgb8 image =
         render::renderOffscreen(renderer, camera, options.width, options.height, kBackground);
     render::writePng(image, options.png);

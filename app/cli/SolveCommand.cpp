@@ -19,6 +19,8 @@
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
+#include "radiometry/sources/DiffuseEmitter.h"
+#include "radiometry/units/Photometry.h"
 
 namespace radiant::app {
 
@@ -34,6 +36,7 @@ struct SolveOptions {
     ViewArguments view;
     std::string json;
     std::string csv;
+    bool photometric = false;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -124,12 +127,19 @@ int runSolve(const SolveOptions& options) {
             area += mesh.patches[i].area;
             power += mesh.patches[i].area * B[i];
         }
-        surfaces.push_back({{"name", scene.surfaces[s].name},
-                            {"area_m2", area},
-                            {"reflectance", rgbJson(material.reflectance)},
-                            {"exitance_W_m2", rgbJson(material.exitance.value())},
-                            {"radiosity_W_m2", rgbJson(area > 0 ? power / area : Rgb(0.0))},
-                            {"power_W", rgbJson(power)}});
+        const Rgb radiosity = area > 0 ? power / area : Rgb(0.0);
+        nlohmann::ordered_json surface = {{"name", scene.surfaces[s].name},
+                                          {"area_m2", area},
+                                          {"reflectance", rgbJson(material.reflectance)},
+                                          {"exitance_W_m2", rgbJson(material.exitance.value())},
+                                          {"radiosity_W_m2", rgbJson(radiosity)},
+                                          {"power_W", rgbJson(power)}};
+        if (options.photometric) {
+            surface["luminous_exitance_lm_m2"] = illuminanceLux(RadiosityRgb(radiosity));
+            surface["luminance_cd_m2"] = luminanceCdPerM2(radianceFromRadiosity(RadiosityRgb(radiosity)));
+            surface["luminous_flux_lm"] = luminousFluxLumen(PowerRgb(power));
+        }
+        surfaces.push_back(std::move(surface));
     }
     const nlohmann::ordered_json report = {
         {"scene", scene.name},
@@ -138,6 +148,7 @@ int runSolve(const SolveOptions& options) {
         {"iterations", stats.iteration},
         {"residual", stats.residual},
         {"seconds", {{"mesh", meshSeconds}, {"form_factors", formFactorSeconds}, {"solve", solveSeconds}}},
+        {"lights", scene.lights.size()},
         {"surfaces", surfaces},
         {"warnings", scene.warnings}};
 
@@ -159,8 +170,12 @@ int runSolve(const SolveOptions& options) {
                     stats.residual, meshSeconds, formFactorSeconds, solveSeconds);
         for (const auto& surface : surfaces) {
             const auto& b = surface["radiosity_W_m2"];
-            std::printf("  %-16s B = (%.4g, %.4g, %.4g) W/m^2\n", surface["name"].get<std::string>().c_str(),
-                        b[0].get<double>(), b[1].get<double>(), b[2].get<double>());
+            if (options.photometric)
+                std::printf("  %-16s L = %.4g cd/m^2, M = %.4g lm/m^2\n", surface["name"].get<std::string>().c_str(),
+                            surface["luminance_cd_m2"].get<double>(), surface["luminous_exitance_lm_m2"].get<double>());
+            else
+                std::printf("  %-16s B = (%.4g, %.4g, %.4g) W/m^2\n", surface["name"].get<std::string>().c_str(),
+                            b[0].get<double>(), b[1].get<double>(), b[2].get<double>());
         }
     }
     return 0;
@@ -182,6 +197,9 @@ Subcommand addSolveCommand(CLI::App& root) {
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
+    sub->add_flag("--photometric", options->photometric,
+                  "Also give each surface's luminance (cd/m^2), luminous exitance (lm/m^2) and flux (lm): 179 lm/W, "
+                  "Y = 0.265 R + 0.670 G + 0.065 B (Radiance's convention)");
     return {sub, [options] { return runSolve(*options); }};
 }
 

@@ -112,6 +112,13 @@ void DisplayPanel::draw() {
     help("Importance-driven radiosity's per-patch importance, relative to its maximum (magenta).");
 
     ImGui::Spacing();
+    ImGui::Checkbox("Photometric units (lx, cd/m\xC2\xB2)", &s.photometric);
+    help("The Probe panel also reads illuminance in lux and luminance in cd/m\xC2\xB2, converted from\n"
+         "the three bands by Radiance's convention: luminous efficacy 179 lm/W and\n"
+         "Y = 0.265 R + 0.670 G + 0.065 B, so E_v = 179 Y(E) and L_v = 179 Y(L).\n"
+         "glTF lights given in candela and lux are read with the same 179 lm/W.");
+
+    ImGui::Spacing();
     if (!editingScale_) scaleSlider_ = s.uiScale;
     ImGui::SetNextItemWidth(-labelRoom);
     // Applied when the slider is let go: rebuilding the font atlas under the cursor makes it jump.

@@ -39,9 +39,33 @@ void MaterialsPanel::draw() {
         editing_ = false;
         refusal_.clear();
     }
+    followProbe(snapshot);
     if (!editing_) loadFrom(scene);
     drawSurfaceList(scene);
     drawEditor(scene);
+    ImGui::Spacing();
+    if (ImGui::Button("Reset materials")) {
+        editing_ = false;
+        refusal_.clear();
+        resetMaterials(live_);
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Every reflectance and exitance back to the scene's as loaded;\nthe solve starts again from B = E");
+}
+
+void MaterialsPanel::followProbe(const Snapshot& snapshot) {
+    if (!probed_) return;
+    const std::optional<ProbePick> pick = probed_();
+    if (!pick || pick->meshGeneration != snapshot.meshGeneration || pick->surface >= snapshot.scene->surfaces.size())
+        return;
+    // Only a new pick selects: a surface chosen in the list afterwards stays chosen.
+    if (followed_ && followed_->point == pick->point && followed_->meshGeneration == pick->meshGeneration) return;
+    followed_ = pick;
+    if (selected_ == pick->surface) return;
+    selected_ = pick->surface;
+    editing_ = false;
+    refusal_.clear();
+    scrollToSelected_ = true;
 }
 
 void MaterialsPanel::drawSurfaceList(const Scene& scene) {
@@ -56,7 +80,12 @@ void MaterialsPanel::drawSurfaceList(const Scene& scene) {
                                {ImGui::GetFontSize(), ImGui::GetFontSize()});
             ImGui::SameLine();
             const std::string label = scene.surfaces[s].name + (material.emits() ? "  (emitter)" : "");
-            if (ImGui::Selectable(label.c_str(), s == selected_)) {
+            const bool clicked = ImGui::Selectable(label.c_str(), s == selected_);
+            if (s == selected_ && scrollToSelected_) {
+                ImGui::SetScrollHereY();
+                scrollToSelected_ = false;
+            }
+            if (clicked) {
                 selected_ = s;
                 editing_ = false;
                 refusal_.clear();
@@ -107,8 +136,9 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     ImGui::Text("%.3g, %.3g, %.3g W", e.x * area, e.y * area, e.z * area);
 
     if (changed) {
+        const bool continuing = editing_;  // a drag or typing goes on: one plot segment for all of it
         editing_ = true;
-        apply();
+        apply(continuing);
     }
     // Once the field is let go the panel follows the snapshot again (it holds what was applied).
     if (committed && refusal_.empty()) editing_ = false;
@@ -123,14 +153,21 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     }
 }
 
-void MaterialsPanel::apply() {
+void MaterialsPanel::apply(bool continuesEdit) {
     const Rgb rho(reflectance_[0], reflectance_[1], reflectance_[2]);
     const Rgb e(exitance_[0], exitance_[1], exitance_[2]);
-    refusal_ = submit(live_, selected_, rho, e);
+    refusal_ = submit(live_, selected_, rho, e, continuesEdit);
+}
+
+void MaterialsPanel::resetMaterials(LiveSolve& live) {
+    const Snapshot& shown = live.snapshot();
+    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    live.send(command::ResetMaterials{});
+    if (shown.running || converged) live.send(command::Run{});
 }
 
 std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const Rgb& reflectance,
-                                   const Rgb& exitanceW_m2) {
+                                   const Rgb& exitanceW_m2, bool continuesEdit) {
     static constexpr const char* kBands[] = {"red", "green", "blue"};
     char message[200];
     for (int band = 0; band < 3; ++band) {
@@ -149,8 +186,9 @@ std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const R
     }
     // Judged before sending: the snapshot is the one this frame shows.
     const Snapshot& shown = live.snapshot();
-    const bool converged = !shown.running && !shown.history.empty() && shown.stats.residual < shown.tolerance;
-    live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2)});
+    // Not the history: a material edit starts a new, empty segment of it before the next step.
+    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2), continuesEdit});
     // A running or converged solve re-solves live, from its current solution (no new form
     // factors). A paused or stepped one stays as the teacher left it: the next step shows the edit.
     if (shown.running || converged) live.send(command::Run{});

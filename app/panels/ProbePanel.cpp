@@ -7,10 +7,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "app/cli/ProbeCommandLine.h"
 #include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/units/Photometry.h"
 
 namespace radiant::app {
 
@@ -77,15 +79,16 @@ bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     if (!snapshot->scene || !snapshot->mesh) return false;
     if (!picker_ || picker_->meshGeneration != snapshot->meshGeneration)
         picker_ = std::make_shared<const Picker>(snapshot->scene, snapshot->meshGeneration);
-    const std::optional<RayHit> hit = picker_->rays.intersect(origin, direction);
+    // The view draws faces from their fronts only (a closed room's near walls are open): a click
+    // means the first face it shows, whose front faces the viewer.
+    const std::optional<RayHit> hit = picker_->rays.intersectFront(origin, direction);
     if (!hit) return false;
-    // A face seen from behind is probed on its back: the detector faces the viewer.
-    const glm::dvec3 normal = glm::dot(hit->normal, direction) > 0 ? -hit->normal : hit->normal;
-    pick_ = ProbePick{hit->point, normal, hit->surface, hit->face, snapshot->meshGeneration};
+    pick_ = ProbePick{hit->point, hit->normal, hit->surface, hit->face, snapshot->meshGeneration};
     reading_.reset();
     error_.clear();
     dirty_ = true;
     pathTracedCurrent_ = false;
+    copied_ = false;
     return true;
 }
 
@@ -213,8 +216,17 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     std::snprintf(patch, sizeof patch, "patch %zu", reading.at.patch);
     ui::sameLineIfFits(ImGui::CalcTextSize(patch).x);
     ImGui::TextDisabled("%s", patch);
-    row("Point", "m", reading.at.point);
+    // Six significant digits: typed back into `radiant probe`, the point lies on the surface within
+    // its tolerance (and the exact value is one "Copy as command" away).
+    const glm::dvec3& p = reading.at.point;
+    char point[96];
+    std::snprintf(point, sizeof point, "%.6g, %.6g, %.6g", p.x, p.y, p.z);
+    ImGui::TextDisabled("Point, m");
+    ui::sameLineIfFits(ImGui::CalcTextSize(point).x);
+    if (ImGui::GetCursorPosX() < ImGui::GetFontSize() * 6.0f) ImGui::SetCursorPosX(ImGui::GetFontSize() * 6.0f);
+    ImGui::TextUnformatted(point);
     row("Normal", "", reading.normal);
+    drawCopyCommand();
     ImGui::Spacing();
     ImGui::TextDisabled("per band: red  green  blue");
     row("E", "W/m\xC2\xB2", reading.irradiance.value());
@@ -236,7 +248,52 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     row("B of patch", "W/m\xC2\xB2", reading.patchRadiosity.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The solver's own value for patch %zu, constant over the patch", reading.at.patch);
+    if (display_ && display_->photometric) {
+        ImGui::Spacing();
+        scalarRow("E_v", "%.4g lx", illuminanceLux(reading.irradiance));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Illuminance: 179 lm/W x (0.265 E_r + 0.670 E_g + 0.065 E_b), Radiance's convention");
+        scalarRow("L_v", "%.4g cd/m\xC2\xB2", luminanceCdPerM2(reading.radiance));
+        if (ImGui::IsItemHovered())
+            ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
+    }
     drawPathTraced(reading);
+}
+
+std::string ProbePanel::commandLine() const {
+    const Snapshot& snapshot = live_.snapshot();
+    if (!pick_ || !snapshot.scene) return {};
+    ProbeCommandInputs inputs;
+    inputs.scene = snapshot.scene->name;
+    inputs.point = pick_->point;
+    inputs.normal = pick_->normal;
+    if (target_ && *target_ < snapshot.scene->surfaces.size()) inputs.target = snapshot.scene->surfaces[*target_].name;
+    inputs.method = snapshot.method;
+    inputs.maxPatchArea = snapshot.meshing.maxPatchArea;
+    inputs.tolerance = snapshot.tolerance;
+    if (methodInfo(snapshot.method).traits.links) inputs.linkTolerance = snapshot.linkTolerance;
+    return probeCommandLine(inputs);
+}
+
+void ProbePanel::drawCopyCommand() {
+    if (ImGui::SmallButton("Copy as command")) {
+        const std::string line = commandLine();
+        ImGui::SetClipboardText(line.c_str());
+        copied_ = true;
+    }
+    if (ImGui::IsItemHovered()) {
+        ImGui::SetNextWindowSize({ImGui::GetFontSize() * 30.0f, 0});
+        ImGui::BeginTooltip();
+        ImGui::TextWrapped("Puts this reading's `radiant probe` line on the clipboard (exact point, method, mesh, "
+                           "tolerance):\n%s", commandLine().c_str());
+        if (methodInfo(live_.snapshot().method).traits.viewDependent)
+            ImGui::TextWrapped("Importance: the command line refines for the scene's home view, not this camera.");
+        ImGui::EndTooltip();
+    }
+    if (copied_) {
+        ui::sameLineIfFits(ImGui::CalcTextSize("copied").x);
+        ImGui::TextColored(theme::kDoneGreen, "copied");
+    }
 }
 
 void ProbePanel::drawPathTraced(const ProbeReading& reading) {

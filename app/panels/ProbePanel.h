@@ -18,6 +18,7 @@
 #include "app/panels/PathTracedReading.h"
 #include "app/solver/LiveSolve.h"
 #include "radiometry/probe/Probe.h"
+#include "render/DisplaySettings.h"
 
 namespace radiant {
 class RayCaster;
@@ -53,6 +54,10 @@ public:
     [[nodiscard]] std::uint64_t readingGeneration() const { return readingGeneration_; }
     /// Chooses the target surface by index (the combo does this too).
     void setTarget(std::size_t surface);
+    /// The display settings whose units switch adds lx and cd/m^2 rows (kept by reference).
+    void followUnits(const render::DisplaySettings& display) { display_ = &display; }
+    /// The `radiant probe ...` line that repeats this reading (ProbeCommandLine.h); empty with no pick.
+    [[nodiscard]] std::string commandLine() const;
 
     /// Readings are refreshed at most this often while the solve runs.
     static constexpr std::chrono::milliseconds kRefreshInterval{250};
@@ -70,6 +75,7 @@ private:
     void drawReadings(const Scene& scene, const ProbeReading& reading);
     void drawTarget(const Scene& scene);
     void drawPathTraced(const ProbeReading& reading);
+    void drawCopyCommand();
     /// Starts the path tracer at the pick, or restarts it when the materials changed under it.
     void followPathTraced(const std::shared_ptr<const Snapshot>& snapshot);
 
@@ -87,6 +93,8 @@ private:
     std::chrono::steady_clock::time_point lastStart_{};
     PathTracedReading pathTraced_;  ///< last: its worker reads picker_'s rays
     bool pathTracedCurrent_ = false;  ///< pathTraced_ runs at pick_
+    const render::DisplaySettings* display_ = nullptr;
+    bool copied_ = false;  ///< "Copy as command" was pressed for this pick
 };
 
 } // namespace radiant::app

@@ -49,6 +49,14 @@ void ScenePanel::draw() {
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
+        if (const std::size_t lights = scene.lights.size(); lights > 0) {
+            ImGui::TextWrapped("%zu glTF light%s (point, spot, sun): direct light a source on every patch", lights,
+                               lights == 1 ? "" : "s");
+            if (ImGui::IsItemHovered())
+                ImGui::SetTooltip("KHR_lights_punctual, read from candela (lux for a sun) at 179 lm/W.\n"
+                                  "Their direct irradiance, averaged over each patch with shadow rays,\n"
+                                  "joins the emission: B = E + rho (H + sum F B).");
+        }
     } else {
         ImGui::TextDisabled("no scene loaded");
     }

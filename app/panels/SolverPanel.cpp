@@ -32,7 +32,8 @@ void SolverPanel::draw() {
     const Snapshot& snapshot = live_.snapshot();
     drawControls(snapshot);
     drawStats(snapshot);
-    drawPlots(snapshot);
+    convergence_.draw(snapshot);
+    drawStepTimes(snapshot);
 }
 
 void SolverPanel::drawControls(const Snapshot& snapshot) {
@@ -129,34 +130,21 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     }
 }
 
-void SolverPanel::drawPlots(const Snapshot& snapshot) {
+void SolverPanel::drawStepTimes(const Snapshot& snapshot) {
     const SolveHistory& history = snapshot.history;
     if (history.empty()) return;
     // Long runs (thousands of shots) are thinned to what the plot's width can show.
     const std::size_t stride = std::max<std::size_t>(1, history.size() / 512);
-    const float width = ImGui::GetContentRegionAvail().x;
-    const float height = ImGui::GetFontSize() * 4.0f;
-    auto plot = [&](const char* id, const char* axis, auto value) {
-        plotValues_.clear();
-        for (std::size_t i = 0; i < history.size(); i += stride) plotValues_.push_back(value(history[i]));
-        const auto [lo, hi] = std::minmax_element(plotValues_.begin(), plotValues_.end());
-        ImGui::Spacing();
-        ImGui::TextDisabled("%s", axis);
-        char overlay[64];
-        std::snprintf(overlay, sizeof overlay, "%.3g .. %.3g", static_cast<double>(*lo), static_cast<double>(*hi));
-        ImGui::PlotLines(id, plotValues_.data(), static_cast<int>(plotValues_.size()), 0, overlay, *lo,
-                         *hi > *lo ? *hi : *lo + 1.0f, {width, height});
-    };
-    auto log10Of = [](double v) { return static_cast<float>(std::log10(std::max(v, 1e-300))); };
-    plot("##residual", shoots(snapshot.method) ? "log10 unshot / emitted  vs  iteration"
-                       : links(snapshot.method)  ? "log10 sweep change  vs  iteration"
-                                                 : "log10 residual  vs  iteration", [&](const IterationStats& s) { return log10Of(s.residual); });
-    if (shoots(snapshot.method))
-        plot("##unshot", "log10 unshot power (W)  vs  iteration",
-             [&](const IterationStats& s) { return log10Of(total(s.unshotPower)); });
-    plot("##time", "time per iteration (ms)  vs  iteration",
-         [](const IterationStats& s) { return static_cast<float>(s.seconds * 1e3); });
-    ImGui::TextDisabled("iteration 1 .. %zu  (left to right)", history.size());
+    plotValues_.clear();
+    for (std::size_t i = 0; i < history.size(); i += stride)
+        plotValues_.push_back(static_cast<float>(history[i].seconds * 1e3));
+    const auto [lo, hi] = std::minmax_element(plotValues_.begin(), plotValues_.end());
+    ImGui::Spacing();
+    ImGui::TextDisabled("time per iteration (ms), this run");
+    char overlay[64];
+    std::snprintf(overlay, sizeof overlay, "%.3g .. %.3g ms", static_cast<double>(*lo), static_cast<double>(*hi));
+    ImGui::PlotLines("##time", plotValues_.data(), static_cast<int>(plotValues_.size()), 0, overlay, *lo,
+                     *hi > *lo ? *hi : *lo + 1.0f, {ImGui::GetContentRegionAvail().x, ImGui::GetFontSize() * 3.0f});
 }
 
 } // namespace radiant::app

@@ -1,9 +1,10 @@
 #pragma once
 // Solver: the method, Run/Pause, Step, Step N, Reset, the tolerance and (hierarchical) the link
-// tolerance; the last step's numbers (iteration, residual, unshot power, links, time) and their
-// history plotted against iteration.
+// tolerance; the last step's numbers (iteration, residual, unshot power, links, time), the
+// convergence plot (ConvergencePlot.h: every method's run overlaid, CSV export) and the step times.
 #include <vector>
 
+#include "app/panels/ConvergencePlot.h"
 #include "app/panels/Panel.h"
 #include "app/solver/LiveSolve.h"
 
@@ -19,7 +20,7 @@ public:
 private:
     void drawControls(const Snapshot& snapshot);
     void drawStats(const Snapshot& snapshot);
-    void drawPlots(const Snapshot& snapshot);
+    void drawStepTimes(const Snapshot& snapshot);
 
     LiveSolve& live_;
     int stepCount_ = 10;
@@ -27,6 +28,7 @@ private:
     bool editingTolerance_ = false;
     float linkToleranceExponent_ = -4.0f;  ///< log10 of the hierarchical link tolerance
     bool editingLinkTolerance_ = false;
+    ConvergencePlot convergence_;
     std::vector<float> plotValues_;    ///< scratch for PlotLines
 };
 

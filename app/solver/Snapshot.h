@@ -9,6 +9,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "app/solver/ConvergenceRecord.h"
 #include "app/solver/SolveHistory.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
@@ -34,7 +35,8 @@ struct Snapshot {
     std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
     SolverMethod method = kSolveDefaults.method;
     IterationStats stats;                   ///< of the last step
-    SolveHistory history;                   ///< every step since the last reset, for the plots
+    SolveHistory history;                   ///< every step of the segment being solved (ConvergenceRecord.h)
+    ConvergenceRecord convergence;          ///< every method's earlier segments, for the overlaid plot
     bool running = false;                   ///< stepping by itself until converged or paused
     double tolerance = kSolveDefaults.tolerance;  ///< running stops when the residual falls below this
     double linkTolerance = SolverOptions{}.linkEpsilon;  ///< hierarchical/importance refinement (SolverOptions)

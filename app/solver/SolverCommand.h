@@ -29,7 +29,12 @@ struct SetMaterial {
     std::size_t surface;
     Rgb reflectance;
     ExitanceRgb exitance;
+    /// Part of the gesture the previous edit began (a slider still dragged, a field still typed in):
+    /// the convergence plot keeps one segment for it (ConvergenceRecord.h).
+    bool continuesEdit = false;
 };
+/// Every material back to the scene's as loaded (LoadScene's); the solve restarts from B = E.
+struct ResetMaterials {};
 struct SetTolerance {
     double tolerance;
 };
@@ -69,5 +74,6 @@ struct LoadScene {
 namespace radiant::app {
 using SolverCommand = std::variant<command::Run, command::Pause, command::Step, command::Reset, command::SetMethod,
                                    command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene,
-                                   command::FocusPoint, command::SetLinkTolerance, command::SetView>;
+                                   command::FocusPoint, command::SetLinkTolerance, command::SetView,
+                                   command::ResetMaterials>;
 }

@@ -41,7 +41,9 @@ struct SolverThread::State {
     bool running = false;
     std::size_t pendingSteps = 0;
     double tolerance = kSolveDefaults.tolerance;
-    SolveHistoryBuilder history;
+    ConvergenceRecorder history{kSolveDefaults.method};
+    /// The scene as LoadScene gave it, before any material edit: what ResetMaterials restores.
+    std::shared_ptr<const Scene> loadedScene;
     std::uint64_t generation = 0;
     std::uint64_t meshGeneration = 0;
     std::uint64_t solverBuilds = 0;
@@ -257,7 +259,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
             } else if constexpr (std::is_same_v<C, command::Reset>) {
                 state.running = false;
                 state.pendingSteps = 0;
-                state.history.clear();
+                state.history.restart(state.method);
                 if (state.solver) state.solver->reset();
             } else if constexpr (std::is_same_v<C, command::FocusPoint>) {
                 state.focus = c.at;
@@ -275,14 +277,14 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 options_.linkEpsilon = c.linkTolerance;
                 if (methodInfo(state.method).traits.links) {
                     state.solver.reset();  // the links were refined to the old tolerance
-                    state.history.clear();
+                    state.history.restart(state.method);
                     ensureSolver(state);
                 }
             } else if constexpr (std::is_same_v<C, command::SetMethod>) {
                 if (c.method != state.method || !state.solver) {
                     state.method = c.method;
                     state.solver.reset();
-                    state.history.clear();
+                    state.history.restart(c.method);  // the other methods' runs stay, to compare
                     ensureSolver(state);
                 }
             } else if constexpr (std::is_same_v<C, command::SetMaterial>) {
@@ -299,10 +301,29 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 scene->materials.push_back(edited);
                 state.scene = std::move(scene);
                 if (state.solver) state.solver->setMaterial(c.surface, c.reflectance, c.exitance);
+                state.history.materialEdited(surface.name, c.continuesEdit);
+            } else if constexpr (std::is_same_v<C, command::ResetMaterials>) {
+                if (!state.scene || !state.loadedScene) throw RadiantError({"", "reset materials"}, "no scene is loaded");
+                // Same geometry (edits never change it): each edited surface takes its loaded
+                // material back; the form factors and links stay.
+                const Scene& loaded = *state.loadedScene;
+                if (state.solver)
+                    for (std::size_t s = 0; s < loaded.surfaces.size(); ++s) {
+                        const Material& was = loaded.materials[loaded.surfaces[s].material];
+                        const Material& is = state.scene->materials[state.scene->surfaces[s].material];
+                        if (was.reflectance != is.reflectance || was.exitance.value() != is.exitance.value())
+                            state.solver->setMaterial(s, was.reflectance, was.exitance);
+                    }
+                state.scene = state.loadedScene;
+                state.running = false;
+                state.pendingSteps = 0;
+                if (state.solver) state.solver->reset();
+                state.history.materialsRestored(state.method);
             } else if constexpr (std::is_same_v<C, command::Remesh> || std::is_same_v<C, command::LoadScene>) {
                 std::shared_ptr<const Scene> scene = state.scene;
                 if constexpr (std::is_same_v<C, command::LoadScene>) {
                     scene = c.scene;
+                    state.loadedScene = c.scene;
                     state.view.reset();  // a camera of the old scene
                 }
                 if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
@@ -320,7 +341,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     ++state.meshGeneration;
                     state.running = false;
                     state.pendingSteps = 0;
-                    state.history.clear();
+                    state.history.clear(state.method);
                     requeueMeshingUnlessSuperseded(c.meshing);
                     throw;
                 }
@@ -331,7 +352,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.solver.reset();
                 state.running = false;
                 state.pendingSteps = 0;
-                state.history.clear();
+                state.history.clear(state.method);
                 publish(state);  // show the new mesh (emission only) while form factors compute
                 ensureSolver(state);
             }
@@ -413,7 +434,8 @@ void SolverThread::publish(State& state) {
     }
     s->method = state.method;
     if (state.solver) s->stats = state.solver->lastStats();
-    s->history = state.history.snapshot();
+    s->history = state.history.steps().snapshot();
+    s->convergence = state.history.snapshot();
     s->running = state.running || state.pendingSteps > 0;
     s->tolerance = state.tolerance;
     s->linkTolerance = options_.linkEpsilon;

@@ -72,6 +72,7 @@ struct QueryContext {
     glm::dvec3 end;
     bool hasEnd;
     glm::dvec3 direction;  ///< of an intersect query; zero for occlusion, where either twin blocks
+    bool frontOnly;        ///< pass through every face met from behind (picking what the view shows)
 };
 
 void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
@@ -83,7 +84,7 @@ void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
         return std::abs(glm::dot(triangle.normal, p) - triangle.planeOffset) <= tolerance;
     };
     if (onPlane(query->start) || (query->hasEnd && onPlane(query->end)) ||
-        (triangle.twoSided && glm::dot(triangle.normal, query->direction) > 0))
+        ((triangle.twoSided || query->frontOnly) && glm::dot(triangle.normal, query->direction) > 0))
         args->valid[0] = 0;
 }
 
@@ -94,9 +95,10 @@ void throwOnDeviceError(RTCDevice device, const std::string& what) {
 }
 
 QueryContext makeContext(const TriangleTable& impl, const glm::dvec3& start, const glm::dvec3& end, bool hasEnd,
-                         const glm::dvec3& direction = glm::dvec3(0.0)) {
+                         const glm::dvec3& direction = glm::dvec3(0.0), bool frontOnly = false) {
     QueryContext context{};
     context.direction = direction;
+    context.frontOnly = frontOnly;
     rtcInitIntersectContext(&context.embree);
     context.impl = &impl;
     context.start = start;
@@ -205,10 +207,20 @@ RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 
 std::optional<RayHit> RayCaster::intersect(const glm::dvec3& origin, const glm::dvec3& direction,
                                            double maxDistance) const {
+    return nearestHit(origin, direction, maxDistance, false);
+}
+
+std::optional<RayHit> RayCaster::intersectFront(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                double maxDistance) const {
+    return nearestHit(origin, direction, maxDistance, true);
+}
+
+std::optional<RayHit> RayCaster::nearestHit(const glm::dvec3& origin, const glm::dvec3& direction, double maxDistance,
+                                            bool frontOnly) const {
     const double length = glm::length(direction);
     if (!(length > 0) || !(maxDistance > 0)) return std::nullopt;
     const glm::dvec3 unit = direction / length;
-    QueryContext context = makeContext(*impl_, origin, origin, false, unit);
+    QueryContext context = makeContext(*impl_, origin, origin, false, unit, frontOnly);
     RTCRayHit rayHit{};
     setRay(rayHit.ray, origin - impl_->origin, unit, 0.0, maxDistance);
     rayHit.hit.geomID = RTC_INVALID_GEOMETRY_ID;

@@ -31,11 +31,17 @@ public:
     /// Nearest hit along origin + t * direction for t in (0, maxDistance]. direction need not be unit.
     [[nodiscard]] std::optional<RayHit> intersect(const glm::dvec3& origin, const glm::dvec3& direction,
                                                   double maxDistance = 1e30) const;
+    /// As intersect, passing through every face met from behind (its normal along the ray): the
+    /// face a click on the 3D view means, which draws each face from its front only.
+    [[nodiscard]] std::optional<RayHit> intersectFront(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                       double maxDistance = 1e30) const;
     /// True when something blocks the open segment between a and b. The end points lie on surfaces;
     /// the segment is shortened by a relative epsilon at both ends so neither end's own face counts.
     [[nodiscard]] bool occluded(const glm::dvec3& a, const glm::dvec3& b) const;
 
 private:
+    [[nodiscard]] std::optional<RayHit> nearestHit(const glm::dvec3& origin, const glm::dvec3& direction,
+                                                   double maxDistance, bool frontOnly) const;
     struct Impl;
     std::unique_ptr<Impl> impl_;
 };

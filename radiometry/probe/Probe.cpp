@@ -44,6 +44,33 @@ double distanceOutsideFace(const Face& face, const glm::dvec3& x) {
     return outside;
 }
 
+/// The point of segment ab nearest to x.
+glm::dvec3 nearestOnSegment(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& x) {
+    const glm::dvec3 ab = b - a;
+    const double length2 = glm::dot(ab, ab);
+    if (!(length2 > 0)) return a;
+    return a + std::clamp(glm::dot(x - a, ab) / length2, 0.0, 1.0) * ab;
+}
+
+/// The point of a convex planar face nearest to x: x's projection when it falls inside, else the
+/// nearest point of its boundary.
+glm::dvec3 nearestOnFace(const Face& face, const glm::dvec3& x) {
+    const glm::dvec3 projected = x - glm::dot(face.normal, x - face.vertices[0]) * face.normal;
+    if (distanceOutsideFace(face, projected) <= 0) return projected;
+    glm::dvec3 best = face.vertices[0];
+    double bestDistance = std::numeric_limits<double>::infinity();
+    const std::size_t count = face.vertices.size();
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 p = nearestOnSegment(face.vertices[i], face.vertices[(i + 1) % count], x);
+        const double d = glm::length(p - x);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = p;
+        }
+    }
+    return best;
+}
+
 /// Visible fractions of a polygon seen from x with normal n, from stratified sample points, each
 /// ray weighted by the kernel whose integral it corrects.
 struct VisibleFractions {
@@ -97,13 +124,30 @@ glm::dvec3 unitNormal(const glm::dvec3& n) {
 } // namespace
 
 Probe::Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, const ProbeOptions& options)
-    : scene_(scene), mesh_(mesh), rays_(rays), options_(options), locator_(mesh) {
+    : scene_(scene), mesh_(mesh), rays_(rays), options_(options), locator_(mesh), lighting_(scene, rays) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& v : mesh.vertices) {
         lo = glm::min(lo, v);
         hi = glm::max(hi, v);
     }
     if (!mesh.vertices.empty()) sceneSize_ = std::max(glm::length(hi - lo), 1e-9);
+}
+
+std::optional<SurfaceSnap> Probe::snapOntoSurface(const glm::dvec3& x, double maxDistance) const {
+    const double tolerance = options_.onSurfaceTolerance * sceneSize_;
+    std::optional<SurfaceSnap> nearest;
+    for (std::uint32_t s = 0; s < scene_.surfaces.size(); ++s) {
+        for (const Face& face : scene_.surfaces[s].faces) {
+            if (face.vertices.size() < 3) continue;
+            const double height = glm::dot(face.normal, x - face.vertices[0]);
+            if (std::abs(height) <= tolerance && std::max(0.0, distanceOutsideFace(face, x)) <= tolerance)
+                return std::nullopt;  // locate takes it as it is
+            const glm::dvec3 p = nearestOnFace(face, x);
+            const double distance = glm::length(p - x);
+            if (distance <= maxDistance && (!nearest || distance < nearest->distance)) nearest = SurfaceSnap{p, distance, s};
+        }
+    }
+    return nearest;
 }
 
 SurfacePoint Probe::locate(const glm::dvec3& x, const glm::dvec3& n) const {
@@ -163,6 +207,7 @@ ProbeReading Probe::measure(const SurfacePoint& at, const glm::dvec3& n, std::sp
     reading.interpolatedRadiosity = RadiosityRgb(interpolateRadiosity(mesh_, radiosity, at.patch, at.point));
     reading.patchRadiosity = RadiosityRgb(radiosity[at.patch]);
     reading.irradiance = irradiance(at, reading.normal, radiosity);
+    reading.directIrradiance = lighting_.at(at.point, reading.normal);
     const Material& material = scene_.materials.at(scene_.surfaces.at(at.surface).material);
     reading.radiosity = RadiosityRgb(material.exitance.value() + material.reflectance * reading.irradiance.value());
     reading.radiance = radianceFromRadiosity(reading.radiosity);
@@ -191,7 +236,7 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
                           .formFactor;
         sum += b * (f * visible);
     }
-    return IrradianceRgb(sum);
+    return IrradianceRgb(sum) + lighting_.at(at.point, up);
 }
 
 TargetReading Probe::target(const SurfacePoint& at, const glm::dvec3& n, std::size_t surface) const {

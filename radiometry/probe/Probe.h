@@ -15,6 +15,8 @@
 //   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
 //   projected solid angle (integral of cos theta_x d omega) and form factor, each times its visible
 //   fraction (rays weighted by the kernel whose integral it corrects).
+//   E(x) also holds the scene's punctual lights' direct irradiance at x, each light with one shadow
+//   ray (DirectLighting.h): a patch's solution holds their light only averaged over the patch.
 #include <cstdint>
 #include <optional>
 #include <span>
@@ -25,6 +27,7 @@
 #include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/sources/DirectLighting.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -47,6 +50,13 @@ struct SurfacePoint {
     glm::dvec3 point{0.0};  ///< projected onto the face's plane
 };
 
+/// A point moved onto the nearest surface (Probe::snapOntoSurface).
+struct SurfaceSnap {
+    glm::dvec3 point{0.0};   ///< on the face
+    double distance = 0;     ///< m, how far it moved
+    std::uint32_t surface = 0;
+};
+
 struct TargetReading {
     std::size_t surface = 0;
     std::string name;
@@ -67,7 +77,8 @@ struct ProbeReading {
     RadiosityRgb interpolatedRadiosity{};  ///< from the patches' solution, as the 3D view shows it, W/m^2
     RadiosityRgb patchRadiosity{};  ///< the solver's value for the patch under the point, W/m^2
     RadianceRgb radiance{};       ///< B / pi, W/(m^2 sr)
-    IrradianceRgb irradiance{};   ///< gathered at the point, W/m^2
+    IrradianceRgb irradiance{};   ///< gathered at the point, W/m^2, the lights' direct part included
+    IrradianceRgb directIrradiance{};  ///< the punctual lights' part of it, W/m^2
     std::optional<TargetReading> target;
 };
 
@@ -81,6 +92,12 @@ public:
     /// x lies on no surface, or when n points into the surface it lies on.
     [[nodiscard]] SurfacePoint locate(const glm::dvec3& x, const glm::dvec3& n) const;
 
+    /// For a point off every surface (beyond locate's tolerance) but within `maxDistance` (m) of a
+    /// face: the nearest point of the nearest face, which locate accepts. nullopt when x already lies
+    /// on a surface, or lies farther than maxDistance from every face. A point typed with a few
+    /// digits too few (a copied reading) is meant, not one a millimetre away in mid-air.
+    [[nodiscard]] std::optional<SurfaceSnap> snapOntoSurface(const glm::dvec3& x, double maxDistance) const;
+
     /// Every reading at x with normal n; `radiosity` is the solver's per-patch solution (W/m^2).
     [[nodiscard]] ProbeReading measure(const glm::dvec3& x, const glm::dvec3& n, std::span<const Rgb> radiosity,
                                        std::optional<std::size_t> targetSurface = std::nullopt) const;
@@ -88,7 +105,8 @@ public:
     [[nodiscard]] ProbeReading measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
                                        std::optional<std::size_t> targetSurface = std::nullopt) const;
 
-    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face.
+    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face, plus the lights'
+    /// direct irradiance at x.
     [[nodiscard]] IrradianceRgb irradiance(const SurfacePoint& at, const glm::dvec3& n,
                                            std::span<const Rgb> radiosity) const;
     /// Solid angle, projected solid angle and form factor of a surface from x, with visibility.
@@ -100,6 +118,7 @@ private:
     const RayCaster* rays_;
     ProbeOptions options_;
     PatchLocator locator_;
+    DirectLighting lighting_;
     double sceneSize_ = 1;
 };
 

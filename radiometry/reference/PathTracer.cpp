@@ -29,7 +29,7 @@ double largestBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
 
 } // namespace
 
-PathTracer::PathTracer(const Scene& scene, const RayCaster& rays) : scene_(scene), rays_(rays), emitters_(scene) {
+PathTracer::PathTracer(const Scene& scene, const RayCaster& rays) : scene_(scene), rays_(rays), emitters_(scene), lights_(scene, &rays) {
     reflectance_.reserve(scene.surfaces.size());
     exitance_.reserve(scene.surfaces.size());
     for (const Surface& surface : scene.surfaces) {
@@ -40,23 +40,25 @@ PathTracer::PathTracer(const Scene& scene, const RayCaster& rays) : scene_(scene
 }
 
 Rgb PathTracer::directIrradiance(const glm::dvec3& x, const glm::dvec3& n, reference::RandomStream& random) const {
-    if (emitters_.empty()) return Rgb(0.0);
+    // A delta light has one direction: its next event is exact and no cosine sample can find it.
+    const Rgb punctual = lights_.empty() ? Rgb(0.0) : lights_.at(x, n).value();
+    if (emitters_.empty()) return punctual;
     const double choose = random.uniform(), u = random.uniform(), v = random.uniform();
     const reference::EmitterSample light = emitters_.sample(choose, u, v);
     const glm::dvec3 d = light.point - x;
     const double r2 = glm::dot(d, d);
-    if (!(r2 > 0)) return Rgb(0.0);
+    if (!(r2 > 0)) return punctual;
     const double r = std::sqrt(r2);
     const double cosX = glm::dot(n, d) / r;
     const double cosY = -glm::dot(light.normal, d) / r;
-    if (cosX <= 0 || cosY <= 0) return Rgb(0.0);
-    if (rays_.occluded(x, light.point)) return Rgb(0.0);
+    if (cosX <= 0 || cosY <= 0) return punctual;
+    if (rays_.occluded(x, light.point)) return punctual;
     // L = M / pi from the emitter, times the geometry term, over the density of the point, times
     // the balance heuristic's weight against the cosine sampling of the same direction.
     const double lightPdf = r2 / (cosY * light.inverseDensity);  // per steradian
     const double cosinePdf = cosX / std::numbers::pi;
     const double misWeight = lightPdf / (lightPdf + cosinePdf);
-    return light.exitance * (cosX * cosY / (std::numbers::pi * r2) * light.inverseDensity * misWeight);
+    return punctual + light.exitance * (cosX * cosY / (std::numbers::pi * r2) * light.inverseDensity * misWeight);
 }
 
 Rgb PathTracer::sampleIrradiance(const glm::dvec3& x, const glm::dvec3& n, reference::RandomStream& random) const {

@@ -15,7 +15,9 @@
 // the integrand's cos/pi, so each bounce multiplies the path's weight by the reflectance it meets;
 // Russian roulette ends paths without bias (Arvo & Kirk, "Particle Transport and Image Synthesis",
 // SIGGRAPH 1990). Surfaces are one-sided: a ray that reaches a face's back gets nothing, and an
-// emitter lights only its front.
+// emitter lights only its front. Punctual lights (points, spots, suns) cannot be hit by a ray: they
+// enter only by next-event estimation, exactly, one shadow ray per light at every vertex
+// (DirectLighting.h, which the solvers share only for their source term).
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -23,6 +25,7 @@
 #include "radiometry/reference/EmitterSampler.h"
 #include "radiometry/reference/RandomStream.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/sources/DirectLighting.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -49,6 +52,7 @@ private:
     const Scene& scene_;
     const RayCaster& rays_;
     reference::EmitterSampler emitters_;
+    DirectLighting lights_;
     std::vector<Rgb> reflectance_;  ///< per surface
     std::vector<Rgb> exitance_;     ///< per surface, W/m^2
 };

@@ -19,6 +19,7 @@
 #include "radiometry/scene/GltfAccessors.h"
 #include "radiometry/scene/GltfCameras.h"
 #include "radiometry/scene/GltfExternalFiles.h"
+#include "radiometry/scene/GltfLights.h"
 #include "radiometry/scene/GltfMaterials.h"
 #include "radiometry/scene/GltfReaderError.h"
 #include "radiometry/scene/TriangleMerging.h"
@@ -94,7 +95,7 @@ public:
         const std::vector<Instance> instances = collectInstances();
         checkTriangleBudget(instances);
         for (const Instance& instance : instances) addNode(instance);
-        warnAboutLights();
+        countIgnoredLights();
         if (droppedTriangles_ > 0)
             result_.warnings.push_back(path_ + ": dropped " + std::to_string(droppedTriangles_) +
                                        " zero-area triangle(s), the first in " + firstDropped_);
@@ -141,15 +142,15 @@ private:
         if (!kept.empty()) result_.warnings.push_back(path_ + ": " + oneLine(kept));
     }
 
-    void warnAboutLights() {
+    /// Lights no node of the scene places shine nowhere; each is named.
+    void countIgnoredLights() {
         for (std::size_t l = 0; l < model_.lights.size(); ++l) {
+            if (placedLights_.count(static_cast<int>(l))) continue;
             const tinygltf::Light& light = model_.lights[l];
-            const std::string name = light.name.empty() ? "light " + std::to_string(l) : "light '" + light.name + "'";
-            result_.warnings.push_back(path_ + ": " + name + " (" + (light.type.empty() ? "untyped" : light.type) +
-                                       ", KHR_lights_punctual) is ignored: Radiant does not support punctual lights yet; "
-                                       "use an emissive surface");
+            const std::string name = light.name.empty() ? "light " + std::to_string(l) : "light " + std::to_string(l) + " '" + light.name + "'";
+            result_.warnings.push_back(path_ + ": " + name + " (KHR_lights_punctual) is placed by no node of the scene; ignored");
         }
-        result_.ignoredLights = model_.lights.size();
+        result_.ignoredLights = model_.lights.size() - placedLights_.size() + unusableLights_;
     }
 
     void readModelFromMemory() {
@@ -201,6 +202,13 @@ private:
         if (n.camera >= 0)
             if (auto camera = detail::readCamera(model_, n.camera, n.name, world, path_, result_.warnings))
                 result_.scene.cameras.push_back(std::move(*camera));
+        if (const int light = detail::nodeLightIndex(n, n.name.empty() ? "node " + std::to_string(node) : n.name, path_); light >= 0) {
+            placedLights_.insert(light);
+            if (auto placed = detail::readLight(model_, light, n.name, world, path_, result_.warnings))
+                result_.scene.lights.push_back(std::move(*placed));
+            else
+                ++unusableLights_;
+        }
         for (int child : n.children) visit(child, world, depth + 1, instances);
     }
 
@@ -334,6 +342,8 @@ private:
     LoadedScene result_;
     std::map<int, std::size_t> materialOf_;
     std::map<std::string, int> nameUses_;
+    std::set<int> placedLights_;
+    std::size_t unusableLights_ = 0;
     static constexpr std::size_t kMaxNodeInstances = 100'000;
     std::size_t nodeVisits_ = 0;
     std::size_t droppedTriangles_ = 0;

@@ -12,7 +12,9 @@
 //  - doubleSided materials: each face is also a reversed twin surface "<name> (back)" right after
 //    it (Surface::side), meshed and solved on its own; an emissive one emits from both sides.
 //  - Cameras: perspective cameras placed by nodes become Scene::cameras (orthographic: a warning).
-//  - KHR_lights_punctual lights are not supported: each is named in a warning.
+//  - KHR_lights_punctual point, spot and directional lights placed by nodes become Scene::lights,
+//    converted from candela (lux for directional) at 179 lm/W (GltfLights.h); a light no node places,
+//    or one that gives no light, is named in a warning.
 //  - External files (buffers, images) resolve against the glTF's own folder only; each must be a
 //    regular file within its byteLength and SceneLoadOptions::fileByteBudget (GltfExternalFiles.h).
 //    A missing image is a warning, and its material uses reflectance baseColorFactor x 0.5.
@@ -41,7 +43,7 @@ struct SceneLoadOptions {
 struct LoadedScene {
     Scene scene;
     std::vector<std::string> warnings;  ///< one line each, already naming file and element (= scene.warnings)
-    std::size_t ignoredLights = 0;      ///< KHR_lights_punctual lights, each also named in a warning
+    std::size_t ignoredLights = 0;      ///< KHR_lights_punctual lights not read (unplaced, dark, unknown type), each named in a warning
 };
 
 /// Loads a .gltf or .glb file. Scene::name is the path as given.

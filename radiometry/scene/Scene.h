@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "radiometry/sources/PunctualLight.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant {
@@ -63,6 +64,7 @@ struct Scene {
     std::vector<Material> materials;
     std::vector<Surface> surfaces;
     std::vector<SceneCamera> cameras;   ///< in file order; may be empty
+    std::vector<PunctualLight> lights;  ///< glTF's KHR_lights_punctual, each a source in every method
     std::vector<std::string> warnings;  ///< the loader's, one line each, naming file and element
 
     [[nodiscard]] double totalArea() const;
@@ -70,6 +72,8 @@ struct Scene {
     /// Faces made two surfaces back to back (counted once per pair).
     [[nodiscard]] std::size_t doubleSidedSurfaceCount() const;
     [[nodiscard]] bool emits() const;
+    /// Something to solve: a surface emits or a light shines.
+    [[nodiscard]] bool lit() const { return emits() || !lights.empty(); }
     /// Index of the surface with this name, or npos.
     [[nodiscard]] std::size_t findSurface(const std::string& surfaceName) const;
     static constexpr std::size_t npos = static_cast<std::size_t>(-1);

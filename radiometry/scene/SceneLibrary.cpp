@@ -10,17 +10,19 @@ namespace radiant {
 
 namespace {
 
-/// Every command and the lab solve what they load, and a scene without a source solves to zero
+/// Every command and the lab solve what they load, and a scene without a source (no emitting surface,
+/// no punctual light) solves to zero
 /// everywhere ("residual 0", a black picture): refused before any form factor is computed.
 LoadedScene requireEmitter(LoadedScene loaded) {
-    if (!loaded.scene.emits()) {
+    if (!loaded.scene.lit()) {
         const std::size_t lights = loaded.ignoredLights;
         throw RadiantError({loaded.scene.name, ""},
                            "no surface emits and no light is supported: give a material an emissive colour "
-                           "(emissiveFactor, with KHR_materials_emissive_strength for W/m^2, or extras.radiant.exitance_W_m2)" +
+                           "(emissiveFactor, with KHR_materials_emissive_strength for W/m^2, or extras.radiant.exitance_W_m2) "
+                           "or add a KHR_lights_punctual point, spot or directional light" +
                                (lights == 0 ? std::string()
                                             : "; " + std::to_string(lights) + " KHR_lights_punctual light" + (lights == 1 ? "" : "s") +
-                                                  " ignored: Radiant does not support punctual lights yet"));
+                                                  " ignored (see the warnings)"));
     }
     return loaded;
 }

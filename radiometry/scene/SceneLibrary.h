@@ -15,7 +15,7 @@ std::vector<std::string> builtinSceneNames();
 /// Loads a scene. A built-in name loads <assetDirectory()>/<name>.gltf (the same file any glTF
 /// viewer opens) and keeps the name as Scene::name; anything else is a path to a glTF file.
 /// Throws RadiantError (one line naming file and element) on bad input, BudgetError over budget,
-/// and RadiantError for a scene in which no surface emits (nothing to solve; loadGltf loads it).
+/// and RadiantError for a scene in which no surface emits and no light shines (nothing to solve; loadGltf loads it).
 LoadedScene loadScene(const std::string& nameOrPath, const SceneLoadOptions& options = {});
 
 } // namespace radiant

@@ -23,7 +23,7 @@ GatheringSolver::GatheringSolver(PatchMaterials materials, std::shared_ptr<const
 }
 
 void GatheringSolver::reset() {
-    radiosity_ = materials_.exitance;
+    radiosity_ = materials_.source;
     solutionReplaced();
     stats_ = {};
     stats_.residual = fractionOfEmitted(residualPower(), materials_.emittedPower());
@@ -55,8 +55,9 @@ void GatheringSolver::gatherAll(std::vector<Rgb>& gathered) const {
 }
 
 std::size_t GatheringSolver::bytes() const {
-    // area, reflectance, exitance, B, and one more Rgb per patch for the sweep's scratch array.
-    return matrix_->bytes() + materials_.size() * (sizeof(double) + 4 * sizeof(Rgb));
+    // area, reflectance, exitance, the lights' H, the source E + rho H, B, and one more Rgb per patch
+    // for the sweep's scratch array.
+    return matrix_->bytes() + materials_.size() * (sizeof(double) + 6 * sizeof(Rgb));
 }
 
 Rgb GatheringSolver::residualPower() {
@@ -65,7 +66,7 @@ Rgb GatheringSolver::residualPower() {
     Rgb power(0.0);
     for (std::size_t i = 0; i < radiosity_.size(); ++i)
         power += materials_.area[i] *
-                 glm::abs(radiosity_[i] - materials_.exitance[i] - materials_.reflectance[i] * gathered[i]);
+                 glm::abs(radiosity_[i] - materials_.source[i] - materials_.reflectance[i] * gathered[i]);
     return power;
 }
 

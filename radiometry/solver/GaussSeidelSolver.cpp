@@ -27,7 +27,7 @@ private:
         for (std::size_t i = 0; i < n; ++i) {
             Rgb sum(0.0);
             for (const FormFactorEntry& e : matrix_->row(i)) sum += static_cast<double>(e.value) * radiosity_[e.column];
-            const Rgb updated = materials_.exitance[i] + materials_.reflectance[i] * sum;
+            const Rgb updated = materials_.source[i] + materials_.reflectance[i] * sum;
             change_[i] = updated - radiosity_[i];
             radiosity_[i] = updated;
         }

@@ -99,6 +99,7 @@ Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
     for (std::size_t k = patchRowBegin_[patch]; k < patchRowBegin_[patch + 1]; ++k)
         irradiance += static_cast<double>(patchRows_[k].weight) * radiosity[patchRows_[k].source];
     const std::uint32_t s = patches_[patch].surface;
+    if (!patchDirect_.empty()) irradiance += patchDirect_[patch];
     return surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
 }
 
@@ -120,6 +121,7 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
     gatherTermsAt(leaf, x, 1.0, rays, caster_ != nullptr, terms);
     Rgb irradiance(0.0);
     for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
+    if (lighting_) irradiance += lighting_->at(x, element.normal).value();
     return surfaceExitance_[surface] + surfaceReflectance_[surface] * irradiance;
 }
 

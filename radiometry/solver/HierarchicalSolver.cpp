@@ -43,6 +43,10 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     }
     visibilityRays_ = std::min(options.formFactors.visibilityRays, kLinkVisibilityRays);
     if (visibilityRays_ > 0) caster_ = std::make_unique<RayCaster>(scene);
+    if (!scene.lights.empty()) {
+        if (!caster_) lightCaster_ = std::make_unique<RayCaster>(scene);
+        lighting_ = std::make_unique<DirectLighting>(scene, caster_ ? caster_.get() : lightCaster_.get());
+    }
 
     patches_.reserve(mesh.patches.size());
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
@@ -144,7 +148,7 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
 
 double HierarchicalSolver::emittedPower() const {
     Rgb power(0.0);
-    for (const ElementIndex root : tree_.roots()) power += tree_.area(root) * surfaceExitance_[tree_.surface(root)];
+    for (const ElementIndex root : tree_.roots()) power += tree_.area(root) * elementSource(root);
     return maxBand(power);
 }
 
@@ -287,6 +291,7 @@ double HierarchicalSolver::pushPull() {
     auto& radiosity = tree_.radiosity();
     const auto& gathered = tree_.gatheredIrradiance();
     pushedIrradiance_.resize(n);
+    lightNewElements();
     Rgb change(0.0), emitted(0.0);
     // Push: parents precede children, so one forward sweep hands every leaf its ancestors' irradiance.
     for (ElementIndex e = 0; e < n; ++e) {
@@ -295,9 +300,10 @@ double HierarchicalSolver::pushPull() {
         if (!tree_.isLeaf(e)) continue;
         const std::uint32_t s = tree_.surface(e);
         const Rgb& irradiance = leafRowsCurrent_ ? leafIrradiance_[e] : pushedIrradiance_[e];
-        const Rgb updated = surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
+        const Rgb source = elementSource(e);
+        const Rgb updated = source + surfaceReflectance_[s] * irradiance;
         change += tree_.area(e) * glm::abs(updated - radiosity[e]);
-        emitted += tree_.area(e) * surfaceExitance_[s];
+        emitted += tree_.area(e) * source;
         radiosity[e] = updated;
     }
     // Pull: children follow parents, so a backward sweep averages finished children.
@@ -315,8 +321,9 @@ double HierarchicalSolver::pushPull() {
 }
 
 void HierarchicalSolver::setLeavesToEmission() {
+    lightNewElements();
     auto& radiosity = tree_.radiosity();
-    for (ElementIndex e = 0; e < tree_.size(); ++e) radiosity[e] = surfaceExitance_[tree_.surface(e)];
+    for (ElementIndex e = 0; e < tree_.size(); ++e) radiosity[e] = elementSource(e);
     std::fill(tree_.gatheredIrradiance().begin(), tree_.gatheredIrradiance().end(), Rgb(0.0));
 }
 
@@ -335,7 +342,8 @@ void HierarchicalSolver::mapSolution(bool gathered) {
     if (gathered && !patchRowsCurrent_) buildPatchRows();
     gathered = gathered && patchRowsCurrent_;
     for (std::size_t i = 0; i < patches_.size(); ++i)
-        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i) : radiosity[patchElement_[i]];
+        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
+                                                                   : radiosity[patchElement_[i]] + patchDirectCorrection(i);
     afterSolutionMapped();
 }
 

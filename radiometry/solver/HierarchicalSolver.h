@@ -14,7 +14,9 @@
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
 // cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
-// pulled up as the area-weighted mean of the children. What a patch and a probe point show is gathered
+// pulled up as the area-weighted mean of the children. The scene's punctual lights are a source
+// term per element: B = E + rho (H_e + gathered), H_e their direct irradiance averaged over the
+// element with shadow rays, computed as elements appear (HierarchicalDirectLight.cpp). What a patch and a probe point show is gathered
 // at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
 #include <cstddef>
 #include <memory>
@@ -25,6 +27,7 @@
 #include "radiometry/mesh/ElementTree.h"
 #include "radiometry/solver/HierarchicalLink.h"
 #include "radiometry/solver/Solver.h"
+#include "radiometry/sources/DirectLighting.h"
 
 namespace radiant {
 
@@ -99,11 +102,13 @@ protected:
     [[nodiscard]] unsigned threads() const { return threads_; }
     [[nodiscard]] const RayCaster* rayCaster() const { return caster_.get(); }
     [[nodiscard]] std::span<const Rgb> surfaceReflectance() const { return surfaceReflectance_; }
-    [[nodiscard]] std::span<const Rgb> surfaceExitance() const { return surfaceExitance_; }
-    /// Sum over elements of A E, the larger band (W): the scale of the refinement threshold.
+    /// Sum over the roots of A (E + rho H), the larger band (W): the scale of the refinement threshold.
     [[nodiscard]] double emittedPower() const;
     /// Mean reflectance over the bands of the element's surface.
     [[nodiscard]] double meanReflectance(ElementIndex e) const;
+    /// The element's source term E + rho H (W/m^2 per band): emission and the lights' reflected
+    /// direct light. Valid for elements lit by lightNewElements().
+    [[nodiscard]] Rgb elementSource(ElementIndex e) const;
 
 private:
     struct Split {
@@ -157,6 +162,11 @@ private:
 
     [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
+    /// H for the elements created since the last call (and each patch's on the first), in parallel.
+    void lightNewElements();
+    /// rho (H of the patch - H of the element it shows): the lights' direct part at the patch's
+    /// resolution where the patch shows an element's constant; zero without lights.
+    [[nodiscard]] Rgb patchDirectCorrection(std::size_t patch) const;
 
     SolverOptions options_;
     HierarchicalRefinement refinement_;
@@ -167,6 +177,10 @@ private:
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
     std::vector<Rgb> surfaceReflectance_;
     std::vector<Rgb> surfaceExitance_;
+    std::unique_ptr<RayCaster> lightCaster_;  ///< the lights' shadow rays when caster_ is not built
+    std::unique_ptr<DirectLighting> lighting_;  ///< null without lights
+    std::vector<Rgb> elementDirect_;  ///< H per element, W/m^2 (empty without lights)
+    std::vector<Rgb> patchDirect_;    ///< H per patch, for the gathered per-patch solution
 
     struct PatchSample {
         std::uint32_t surface, face;

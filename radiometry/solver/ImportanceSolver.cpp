@@ -213,10 +213,9 @@ Rgb ImportanceSolver::imageResponse() const {
 
 Rgb ImportanceSolver::adjointResponse() const {
     const ElementTree& tree = elements();
-    const auto exitance = surfaceExitance();
     Rgb sum(0.0);
     for (ElementIndex e = 0; e < tree.size(); ++e)
-        if (tree.isLeaf(e)) sum += tree.area(e) * importance_[e] * exitance[tree.surface(e)];
+        if (tree.isLeaf(e)) sum += tree.area(e) * importance_[e] * elementSource(e);
     return sum;
 }
 

@@ -22,12 +22,12 @@ private:
         // solution's exact residual and the next sweep's gather: one product per sweep.
         if (gathered_.size() != radiosity_.size()) gatherAll(gathered_);
         for (std::size_t i = 0; i < radiosity_.size(); ++i)
-            radiosity_[i] = materials_.exitance[i] + materials_.reflectance[i] * gathered_[i];
+            radiosity_[i] = materials_.source[i] + materials_.reflectance[i] * gathered_[i];
         gatherAll(gathered_);
         Rgb power(0.0);
         for (std::size_t i = 0; i < radiosity_.size(); ++i)
             power += materials_.area[i] *
-                     glm::abs(radiosity_[i] - materials_.exitance[i] - materials_.reflectance[i] * gathered_[i]);
+                     glm::abs(radiosity_[i] - materials_.source[i] - materials_.reflectance[i] * gathered_[i]);
         return power;
     }
 

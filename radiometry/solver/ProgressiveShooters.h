@@ -3,9 +3,10 @@
 // while every patch still receives on its own - the patches and elements of
 //   M. F. Cohen, D. P. Greenberg, D. S. Immel, P. J. Brock, "An efficient radiosity approach for
 //   realistic image synthesis", IEEE Computer Graphics and Applications 6(3), 1986.
-// A group shoots its members' unshot power sum_i A_i dB_i as one uniform radiosity over its area,
-// so a shot costs one pass over the receivers for k x k patches, and the shot count needed for a
-// residual falls by about the group size. Light reaching a receiver is still resolved per patch.
+// A group shoots its members' unshot power sum_i A_i dB_i in one pass over the receivers for k x k
+// patches, so the shot count needed for a residual falls by about the group size; each member's
+// light still leaves from that member (the shot's kernel weighs each member by its share of the
+// power, ProgressiveShot.cpp), and light reaching a receiver is resolved per patch.
 #include <cstddef>
 #include <cstdint>
 #include <span>

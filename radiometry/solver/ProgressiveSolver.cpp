@@ -44,8 +44,8 @@ void ProgressiveSolver::prepareShooters() {
 }
 
 void ProgressiveSolver::reset() {
-    radiosity_ = materials_.exitance;
-    unshot_ = materials_.exitance;
+    radiosity_ = materials_.source;
+    unshot_ = materials_.source;
     irradiance_.assign(materials_.size(), Rgb(0.0));
     stats_ = {};
     lastGroup_ = -1;
@@ -80,7 +80,7 @@ void ProgressiveSolver::setMaterial(std::size_t surface, const Rgb& reflectance,
     // Keep B = E + rho H with the light already gathered (H); the change in B is light that the
     // rest of the scene has not seen yet, so it joins the unshot radiosity (negative if darker).
     for (std::size_t i = materials_.surfaceFirstPatch[surface]; i < materials_.surfaceFirstPatch[surface + 1]; ++i) {
-        const Rgb updated = materials_.exitance[i] + materials_.reflectance[i] * irradiance_[i];
+        const Rgb updated = materials_.source[i] + materials_.reflectance[i] * irradiance_[i];
         unshot_[i] += updated - radiosity_[i];
         radiosity_[i] = updated;
     }
@@ -94,7 +94,8 @@ IterationStats ProgressiveSolver::step() {
     if (nextShooterPower_ > 0) {
         const std::size_t group = nextShooter_;
         lastGroup_ = static_cast<std::int64_t>(group);
-        // The group leaves as one uniform radiosity carrying its members' unshot power.
+        // The group's mean unshot radiosity times F_{j -> group}, which weighs each member by its
+        // share of the power (ProgressiveShot.cpp): the light leaves from where it is.
         Rgb power(0.0);
         double brightest = -1;
         memberPower_.clear();

@@ -3,6 +3,9 @@
 // iteration, so a class can watch light spread and compare methods on the same scene.
 //
 //   B_i = E_i + rho_i * sum_j F_ij B_j      (per band; F_ij from patch i to patch j)
+//
+// with the scene's punctual lights as a source term: E_i + rho_i H_i, H_i their direct irradiance
+// averaged over patch i (or element) with shadow rays (DirectLighting.h).
 #include <cstdint>
 #include <memory>
 #include <span>

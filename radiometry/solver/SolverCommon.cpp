@@ -4,6 +4,8 @@
 #include <string>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/sources/DirectLighting.h"
 
 namespace radiant {
 
@@ -35,6 +37,13 @@ PatchMaterials PatchMaterials::from(const Scene& scene, const PatchMesh& mesh) {
     materials.area.resize(mesh.size());
     materials.reflectance.resize(mesh.size());
     materials.exitance.resize(mesh.size());
+    materials.source.resize(mesh.size());
+    if (scene.lights.empty()) {
+        materials.directIrradiance.assign(mesh.size(), Rgb(0.0));
+    } else {
+        const RayCaster rays(scene);
+        materials.directIrradiance = meanDirectIrradiance(scene, mesh, &rays);
+    }
     for (std::size_t i = 0; i < mesh.size(); ++i) materials.area[i] = mesh.patches[i].area;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         const std::size_t m = scene.surfaces[s].material;
@@ -55,12 +64,13 @@ void PatchMaterials::setSurface(std::size_t surface, const Rgb& newReflectance, 
     for (std::size_t i = surfaceFirstPatch[surface]; i < surfaceFirstPatch[surface + 1]; ++i) {
         reflectance[i] = newReflectance;
         exitance[i] = newExitance.value();
+        source[i] = exitance[i] + reflectance[i] * directIrradiance[i];
     }
 }
 
 Rgb PatchMaterials::emittedPower() const {
     Rgb sum(0.0);
-    for (std::size_t i = 0; i < size(); ++i) sum += area[i] * exitance[i];
+    for (std::size_t i = 0; i < size(); ++i) sum += area[i] * source[i];
     return sum;
 }
 

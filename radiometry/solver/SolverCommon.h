@@ -17,16 +17,24 @@ struct PatchMaterials {
     std::vector<double> area;          ///< m^2
     std::vector<Rgb> reflectance;      ///< per band, [0, 1)
     std::vector<Rgb> exitance;         ///< W/m^2 per band
+    /// H: the scene's punctual lights' direct irradiance averaged over the patch (DirectLighting.h),
+    /// W/m^2 per band; zero without lights.
+    std::vector<Rgb> directIrradiance;
+    /// The source term every solver starts from and gathers onto: E + rho H, W/m^2 per band. The
+    /// lights' reflected direct light joins the emission, so B = source + rho F B.
+    std::vector<Rgb> source;
     std::vector<std::uint32_t> surfaceFirstPatch;  ///< as PatchMesh::surfaceFirstPatch
 
     /// Throws RadiantError when a material is out of range or the mesh does not match the scene.
+    /// Casts the lights' shadow rays (a ray caster of its own) when the scene has lights.
     static PatchMaterials from(const Scene& scene, const PatchMesh& mesh);
 
     [[nodiscard]] std::size_t size() const { return area.size(); }
     [[nodiscard]] std::size_t surfaceCount() const { return surfaceFirstPatch.size() - 1; }
     /// Sets every patch of `surface`; validates like from() and names the surface in errors.
     void setSurface(std::size_t surface, const Rgb& newReflectance, const ExitanceRgb& newExitance);
-    /// sum_i A_i E_i per band, W.
+    /// sum_i A_i (E_i + rho_i H_i) per band, W: the power the system is driven by (emitted, and the
+    /// lights' first reflection), so a scene lit only by lights has a scale for its residual.
     [[nodiscard]] Rgb emittedPower() const;
 };
 

@@ -73,6 +73,7 @@ using Rgb = glm::dvec3;
 using PowerRgb = Quantity<Rgb, 1, 0, 0>;
 using IrradianceRgb = Quantity<Rgb, 1, -2, 0>;
 using RadianceRgb = Quantity<Rgb, 1, -2, -1>;
+using IntensityRgb = Quantity<Rgb, 1, 0, -1>;
 
 // Radiosity and exitance share irradiance's unit; the names say which is meant.
 using Radiosity = Irradiance;

@@ -2,6 +2,9 @@
 
 #include <utility>
 
+#include "radiometry/common/Check.h"
+#include "render/gl/ScopedBinding.h"
+
 namespace radiant::render::gl {
 
 Buffer::Buffer() { glGenBuffers(1, &id_); }
@@ -23,9 +26,17 @@ Buffer& Buffer::operator=(Buffer&& other) noexcept {
 }
 
 void Buffer::setData(std::span<const std::byte> bytes, GLenum usage) {
-    glBindBuffer(GL_ARRAY_BUFFER, id_);
+    const ScopedArrayBuffer bound(id_);
     glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(bytes.size()), bytes.data(), usage);
     byteSize_ = bytes.size();
+}
+
+void Buffer::setSubData(std::size_t offsetBytes, std::span<const std::byte> bytes) {
+    RADIANT_CHECK_LE(offsetBytes + bytes.size(), byteSize_);
+    if (bytes.empty()) return;
+    const ScopedArrayBuffer bound(id_);
+    glBufferSubData(GL_ARRAY_BUFFER, static_cast<GLintptr>(offsetBytes), static_cast<GLsizeiptr>(bytes.size()),
+                    bytes.data());
 }
 
 } // namespace radiant::render::gl

@@ -20,12 +20,21 @@ public:
     [[nodiscard]] GLuint id() const { return id_; }
     [[nodiscard]] std::size_t byteSize() const { return byteSize_; }
 
-    /// Replaces the whole contents (GL_ARRAY_BUFFER target; the buffer is left bound there).
+    // Edits bind the buffer to GL_ARRAY_BUFFER and restore what was bound there before.
+
+    /// Replaces the whole contents and size.
     void setData(std::span<const std::byte> bytes, GLenum usage = GL_STATIC_DRAW);
+    /// Overwrites bytes [offset, offset + size) of the contents; they must lie inside byteSize(),
+    /// else InvariantError.
+    void setSubData(std::size_t offsetBytes, std::span<const std::byte> bytes);
 
     template <class T>
     void setData(std::span<const T> items, GLenum usage = GL_STATIC_DRAW) {
         setData(std::as_bytes(items), usage);
+    }
+    template <class T>
+    void setSubData(std::size_t offsetBytes, std::span<const T> items) {
+        setSubData(offsetBytes, std::as_bytes(items));
     }
 
 private:

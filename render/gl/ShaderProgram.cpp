@@ -111,6 +111,9 @@ GLint ShaderProgram::location(const char* uniform) const {
 void ShaderProgram::set(const char* uniform, const glm::mat4& value) const {
     glUniformMatrix4fv(location(uniform), 1, GL_FALSE, glm::value_ptr(value));
 }
+void ShaderProgram::set(const char* uniform, const glm::vec2& value) const {
+    glUniform2fv(location(uniform), 1, glm::value_ptr(value));
+}
 void ShaderProgram::set(const char* uniform, const glm::vec3& value) const {
     glUniform3fv(location(uniform), 1, glm::value_ptr(value));
 }

@@ -4,6 +4,7 @@
 #include <epoxy/gl.h>
 
 #include <glm/mat4x4.hpp>
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 #include <string>
@@ -29,6 +30,7 @@ public:
 
     // Setters act on this program (made current); a name the linker optimised away is ignored, as GL does.
     void set(const char* uniform, const glm::mat4& value) const;
+    void set(const char* uniform, const glm::vec2& value) const;
     void set(const char* uniform, const glm::vec3& value) const;
     void set(const char* uniform, const glm::vec4& value) const;
     void set(const char* uniform, float value) const;

@@ -2,6 +2,9 @@
 // Move-only owner of a 2D texture (render targets, later the false-colour legend's ramp).
 #include <epoxy/gl.h>
 
+#include <glm/vec4.hpp>
+#include <span>
+
 namespace radiant::render::gl {
 
 class Texture2D {
@@ -18,6 +21,10 @@ public:
     [[nodiscard]] int width() const { return width_; }
     [[nodiscard]] int height() const { return height_; }
     void bind(GLuint unit) const;
+    /// Replaces every texel with `texels` (width x height, row-major from the bottom row, RGBA floats
+    /// converted to the internal format); a size mismatch is an InvariantError. Restores the active
+    /// unit's GL_TEXTURE_2D binding.
+    void upload(std::span<const glm::vec4> texels);
 
 private:
     GLuint id_ = 0;

@@ -1,5 +1,7 @@
 #include "render/gl/VertexArray.h"
 
+#include "render/gl/ScopedBinding.h"
+
 #include <utility>
 
 namespace radiant::render::gl {
@@ -24,8 +26,9 @@ void VertexArray::bind() const { glBindVertexArray(id_); }
 
 void VertexArray::addFloatAttribute(const Buffer& buffer, GLuint location, GLint components, std::size_t strideBytes,
                                     std::size_t offsetBytes) {
-    glBindVertexArray(id_);
-    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    // The vertex array records the buffer bound at glVertexAttribPointer; both bindings are put back.
+    const ScopedVertexArray array(id_);
+    const ScopedArrayBuffer bound(buffer.id());
     glEnableVertexAttribArray(location);
     // GL takes the offset into the bound buffer disguised as a pointer.
     glVertexAttribPointer(location, components, GL_FLOAT, GL_FALSE, static_cast<GLsizei>(strideBytes),
@@ -34,8 +37,9 @@ void VertexArray::addFloatAttribute(const Buffer& buffer, GLuint location, GLint
 
 void VertexArray::addIntAttribute(const Buffer& buffer, GLuint location, std::size_t strideBytes,
                                   std::size_t offsetBytes) {
-    glBindVertexArray(id_);
-    glBindBuffer(GL_ARRAY_BUFFER, buffer.id());
+    // The vertex array records the buffer bound at glVertexAttribPointer; both bindings are put back.
+    const ScopedVertexArray array(id_);
+    const ScopedArrayBuffer bound(buffer.id());
     glEnableVertexAttribArray(location);
     glVertexAttribIPointer(location, 1, GL_INT, static_cast<GLsizei>(strideBytes),
                            reinterpret_cast<const void*>(offsetBytes));  // NOLINT

@@ -416,6 +416,7 @@ TEST_CASE("hemisphere 3D dome, screenshot" * doctest::skip()) {
     patches.setMaterials(box);
     patches.setRadiosity(radiosity, 1);
     patches.setSettings(render::DisplaySettings{});
+    patches.prepare();
     render::Camera camera;
     camera.eye = {0.278, 0.50, -0.42};
     camera.forward = glm::normalize(glm::dvec3(0.33, 0.08, 0.20) - camera.eye);

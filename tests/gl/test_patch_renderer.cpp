@@ -15,8 +15,6 @@
 #include "radiometry/common/Error.h"
 #include "render/ColourScale.h"
 #include "render/OffscreenRender.h"
-#include "radiometry/scene/SceneLibrary.h"
-#include "render/FaceGrids.h"
 #include "render/PatchRenderer.h"
 #include "render/gl/Framebuffer.h"
 #include "render/overlay/DepthVisibility.h"
@@ -128,6 +126,7 @@ struct Rig {
 
     ImageRgb8 draw(const render::DisplaySettings& settings) {
         renderer->setSettings(settings);
+        renderer->prepare();
         return render::renderOffscreen(*renderer, frontCamera(), kWidth, kHeight, {0, 0, 0});
     }
 };
@@ -261,61 +260,6 @@ TEST_CASE("the shooter's outline and the wireframe darken or colour patch edges 
     CHECK(pixelAt(highlighted, 0.8 + 1.0 / kWidth, 0.5) == pixelAt(bare, 0.8 + 1.0 / kWidth, 0.5));
 }
 
-TEST_CASE("the exposure key: the furnace's E / (1 - rho) from the emitters, held while light spreads, or automatic") {
-    requireDisplay();
-    // A furnace (every patch emits E and reflects rho) converges to B = E / (1 - rho) everywhere.
-    const double exitance = 2.0, reflectance = 0.5;
-    const double converged = exitance / (1 - reflectance);
-    app::Window window{{64, 64, "exposure key test", false, false}};
-    Field furnace({"furnace", Rgb(reflectance), ExitanceRgb(Rgb(exitance))});
-    render::PatchRenderer renderer;
-    renderer.setMesh(furnace.scene, furnace.mesh, 1);
-    render::DisplaySettings settings = plain();
-    settings.shading = render::Shading::Flat;
-    renderer.setSettings(settings);
-    // Early in the solve only the emission is there; the key already expects the converged light.
-    const std::vector<Rgb> early(kPatches, Rgb(exitance));
-    renderer.setRadiosity(early, 1);
-    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(converged).scale(0));
-    const glm::dvec3 earlyPixel = pixelAt(render::renderOffscreen(renderer, frontCamera(), kWidth, kHeight, {0, 0, 0}), 0.5, 0.5);
-    CHECK(std::abs(earlyPixel.y - toneMapped255(exitance, 0.35 / converged)) <= 2.0);
-    const std::vector<Rgb> late(kPatches, Rgb(converged));
-    renderer.setRadiosity(late, 2);
-    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(converged).scale(0));
-    const glm::dvec3 latePixel = pixelAt(render::renderOffscreen(renderer, frontCamera(), kWidth, kHeight, {0, 0, 0}), 0.5, 0.5);
-    CHECK(std::abs(latePixel.y - toneMapped255(converged, 0.35 / converged)) <= 2.0);
-    CHECK(latePixel.y > earlyPixel.y + 40);  // the view brightens as light spreads
-
-    // A material edit keeps the key, so doubling the light doubles what the picture shows; a new
-    // mesh (another scene, or meshing) derives it again.
-    Field brighter({"furnace", Rgb(reflectance), ExitanceRgb(Rgb(2 * exitance))});
-    renderer.setMaterials(brighter.scene);
-    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(converged).scale(0));
-    renderer.setMesh(brighter.scene, brighter.mesh, 2);
-    CHECK(renderer.exposureKeyW_m2() == doctest::Approx(2 * converged).scale(0));
-
-    // Without emitters there is no balance to key on: the automatic key (the field's mean).
-    Rig rig;
-    const double mean = 0.35 / expectedExposureScale(0.0);
-    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean).scale(0));
-    // Held: the key of the solution shown when re-keyed, kept while the solution doubles.
-    settings.exposureKey = render::ExposureKey::Held;
-    rig.renderer->setSettings(settings);
-    std::vector<Rgb> doubled = rig.field.radiosity;
-    for (Rgb& b : doubled) b *= 2.0;
-    rig.renderer->setRadiosity(doubled, 2);
-    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean).scale(0));
-    CHECK(rig.renderer->automaticExposureKeyW_m2() == doctest::Approx(2 * mean).scale(0));
-    ++settings.rekeyCount;
-    rig.renderer->setSettings(settings);
-    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(2 * mean).scale(0));
-    // Automatic follows every solution.
-    settings.exposureKey = render::ExposureKey::Automatic;
-    rig.renderer->setSettings(settings);
-    rig.renderer->setRadiosity(rig.field.radiosity, 3);
-    CHECK(rig.renderer->exposureKeyW_m2() == doctest::Approx(mean).scale(0));
-}
-
 TEST_CASE("a point behind a nearer surface is hidden in the depth buffer, a point on the front surface is not") {
     requireDisplay();
     // The field at z = 0 and, in front of its left half, a blind at z = 0.3.
@@ -343,73 +287,13 @@ TEST_CASE("a point behind a nearer surface is hidden in the depth buffer, a poin
     glClearDepth(1.0);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     const render::Viewport viewport{0, 0, kWidth, kHeight};
+    renderer.prepare();
     renderer.draw(frontCamera(), viewport.aspect());
     CHECK(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.75, 0.5, 0.0}));       // open
     CHECK_FALSE(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.25, 0.5, 0.0}));  // behind
     CHECK(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.25, 0.5, 0.3}));        // on the blind
     CHECK_FALSE(render::visibleInDepthBuffer(frontCamera(), viewport, kHeight, {0.75, 0.5, 3.0}));  // behind the eye
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-}
-
-TEST_CASE("face grids: a meshed quad face is found as its n x m grid, cell (i, j) centred at the bilinear point") {
-    // A trapezoid (not a parallelogram), so the bilinear map is not affine.
-    Scene scene;
-    scene.name = "trapezoid";
-    scene.materials.push_back({"grey", Rgb(0.5), ExitanceRgb{}});
-    Face face;
-    face.vertices = {{0, 0, 0}, {2, 0, 0}, {1.5, 1, 0}, {0.5, 1, 0}};
-    face.updateGeometry();
-    scene.surfaces.push_back({"trapezoid", 0, {face}, "test"});
-    const PatchMesh mesh = meshScene(scene, {face.area / 12.0});
-    const render::FaceGrids found = render::findFaceGrids(scene, mesh);
-    REQUIRE(found.grids.size() == 1);
-    const render::FaceGrid& grid = found.grids.front();
-    CHECK(static_cast<std::size_t>(grid.columns) * grid.rows == mesh.size());
-    CHECK(grid.columns > 1);
-    CHECK(grid.rows > 1);
-    for (std::size_t j = 0; j < grid.rows; ++j)
-        for (std::size_t i = 0; i < grid.columns; ++i) {
-            const double u = (static_cast<double>(i) + 0.5) / grid.columns, v = (static_cast<double>(j) + 0.5) / grid.rows;
-            const glm::dvec3 bilinear = (1 - u) * (1 - v) * face.vertices[0] + u * (1 - v) * face.vertices[1] +
-                                        u * v * face.vertices[2] + (1 - u) * v * face.vertices[3];
-            const Patch& patch = mesh.patches[grid.cellPatch[j * grid.columns + i]];
-            glm::dvec3 centre(0.0);
-            for (int c = 0; c < 4; ++c) centre += mesh.vertices[patch.corners[static_cast<std::size_t>(c)]] / 4.0;
-            CAPTURE(i);
-            CAPTURE(j);
-            CHECK(glm::distance(centre, bilinear) < 1e-9);
-        }
-
-    // The Cornell box: every quad face is a grid; the left wall, two triangles, is not.
-    const Scene cornell = loadScene("cornell-box").scene;
-    const PatchMesh cornellMesh = meshScene(cornell, {0.01});
-    const render::FaceGrids cornellGrids = render::findFaceGrids(cornell, cornellMesh);
-    const std::size_t leftWall = cornell.findSurface("left wall");
-    REQUIRE(leftWall != Scene::npos);
-    for (std::size_t p = 0; p < cornellMesh.size(); ++p) {
-        const Patch& patch = cornellMesh.patches[p];
-        const bool quadFace = cornell.surfaces[patch.surface].faces[patch.face].vertices.size() == 4;
-        CAPTURE(p);
-        CHECK(static_cast<bool>(cornellGrids.patchInGrid[p]) == quadFace);
-        if (patch.surface == leftWall) CHECK_FALSE(cornellGrids.patchInGrid[p]);
-    }
-}
-
-TEST_CASE("legend: linear ticks on a 1-2-5 step from zero, log ticks at each power of ten") {
-    const render::ColourLegend linear = render::makeLegend(37.0, false, 3);
-    CHECK(linear.minW_m2 == 0.0);
-    REQUIRE(linear.ticksW_m2.size() >= 4);
-    CHECK(linear.ticksW_m2.front() == 0.0);
-    CHECK(linear.ticksW_m2[1] == doctest::Approx(5.0).scale(0));
-    CHECK(linear.ticksW_m2.back() <= 37.0);
-    CHECK(linear.position(37.0 / 4) == doctest::Approx(0.25).scale(0));
-
-    const render::ColourLegend log = render::makeLegend(250.0, true, 3);
-    CHECK(log.minW_m2 == doctest::Approx(0.25).scale(0));
-    REQUIRE(log.ticksW_m2.size() == 3);
-    CHECK(log.ticksW_m2[0] == doctest::Approx(1.0).scale(0));
-    CHECK(log.ticksW_m2[2] == doctest::Approx(100.0).scale(0));
-    CHECK(log.position(std::sqrt(0.25 * 250.0)) == doctest::Approx(0.5).scale(0));
 }
 
 }  // TEST_SUITE

@@ -51,6 +51,7 @@ std::pair<int, int> centreFromBothSides(const Scene& scene, double front, double
     settings.highlightShooter = false;
     settings.exposureKey = render::ExposureKey::Automatic;  // keyed on the lit side: it shows mid-grey
     renderer->setSettings(settings);
+    renderer->prepare();
     const render::ImageRgb8 above = render::renderOffscreen(*renderer, looking(1.5), kSize, kSize, kBackground);
     const render::ImageRgb8 below = render::renderOffscreen(*renderer, looking(-1.5), kSize, kSize, kBackground);
     CHECK(above.at(kSize / 2, kSize / 2).z < 200);  // a surface, not the backdrop

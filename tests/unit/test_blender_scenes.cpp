@@ -1,6 +1,6 @@
 // Scenes as Blender's glTF exporter writes them (tests/data/make_blender_scenes.py): double-sided
 // materials against the parallel-plates closed form and a closed room's energy balance (docs/reference.md),
-// punctual lamps refused with a warning, a missing texture, a camera, and names of multi-material
+// punctual lamps read as lights, a missing texture, a camera, and names of multi-material
 // objects. The command line is run for what only it does (warnings on stderr and in the JSON).
 #include <doctest/doctest.h>
 
@@ -160,30 +160,18 @@ TEST_CASE("a room made of Blender's cube (normals outward), double-sided, is lit
     CHECK(solved.meanB("Cube") == 0.0);
 }
 
-TEST_CASE("a punctual lamp is named in a warning, and a scene that nothing lights is refused") {
-    const LoadedScene loaded = loadGltf(blenderFile("point_lamp_only.gltf"));
-    CHECK(anyContains(loaded.scene.warnings,
-                      "light 'Lamp' (point, KHR_lights_punctual) is ignored: Radiant does not support punctual lights yet; "
-                      "use an emissive surface"));
-    try {
-        (void)loadScene(blenderFile("point_lamp_only.gltf"));
-        FAIL("a scene without an emitter loaded");
-    } catch (const RadiantError& e) {
-        CHECK(contains(e.what(), "point_lamp_only.gltf"));
-        CHECK(contains(e.what(), "no surface emits and no light is supported"));
-        CHECK(!contains(e.what(), "\n"));
-        CHECK(contains(e.what(), "1 KHR_lights_punctual light ignored"));
-    }
-    for (const char* command : {"solve", "probe"}) {
-        CAPTURE(command);
-        const Run run = runRadiant(std::string(command) + " '" + blenderFile("point_lamp_only.gltf") + "'" +
-                                   (std::string(command) == "probe" ? " --point 0,0,0 --normal 0,1,0" : ""));
-        CHECK(run.status == 2);
-        CHECK(lineCount(run.err) == 1);
-        CHECK(contains(run.err, "no surface emits and no light is supported"));
-        CHECK(contains(run.err, "1 KHR_lights_punctual light ignored"));
-        CHECK(!contains(run.err, "form factors"));
-    }
+TEST_CASE("a Blender point lamp is read as a light, and a scene lit only by it is solved") {
+    // The lamp-only scene used to be refused; the closed forms are in test_punctual_lights.cpp.
+    const LoadedScene loaded = loadScene(blenderFile("point_lamp_only.gltf"));
+    REQUIRE(loaded.scene.lights.size() == 1);
+    CHECK(loaded.scene.lights[0].name == "Lamp");
+    CHECK(loaded.ignoredLights == 0);
+    CHECK(!anyContains(loaded.scene.warnings, "Lamp"));
+    const Run run = runRadiant("probe '" + blenderFile("point_lamp_only.gltf") + "' --point 0,0,0 --normal 0,1,0 --max-patch-area 0.05");
+    CHECK(run.status == 0);
+    // 683 / (4 pi) cd at 179 lm/W, 2 m up: E = I / d^2 at the floor's centre.
+    const auto reading = nlohmann::json::parse(run.out);
+    CHECK(reading["irradiance_W_m2"][0].get<double>() == doctest::Approx(683 / (4 * std::numbers::pi) / 179 / 4).epsilon(1e-6).scale(0));
 }
 
 TEST_CASE("a missing texture is a warning naming the file and the grey used, wherever the command runs") {

@@ -79,6 +79,40 @@ std::vector<Rgb> surfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) 
     return means;
 }
 
+/// Relative difference per patch (band sums) of a solution from a reference on the same mesh, over
+/// the patches lit to at least 5% of the brightest non-emitter (in deep shadow a relative error
+/// means little).
+struct PatchAgreement {
+    std::size_t counted = 0;
+    double mean = 0, worst = 0;
+    std::string worstSurface;
+};
+
+PatchAgreement patchAgreement(const Scene& scene, const PatchMesh& mesh, const std::vector<Rgb>& solution,
+                              const std::vector<Rgb>& reference) {
+    const auto brightness = [](const Rgb& b) { return b.x + b.y + b.z; };
+    const auto emits = [&](std::size_t i) {
+        return brightness(scene.materials[scene.surfaces[mesh.patches[i].surface].material].exitance.value()) > 0;
+    };
+    double brightest = 0;
+    for (std::size_t i = 0; i < mesh.size(); ++i)
+        if (!emits(i)) brightest = std::max(brightest, brightness(reference[i]));
+    PatchAgreement agreement;
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const double expected = brightness(reference[i]);
+        if (expected < 0.05 * brightest) continue;
+        const double error = std::abs(brightness(solution[i]) / expected - 1);
+        agreement.mean += error;
+        ++agreement.counted;
+        if (error > agreement.worst) {
+            agreement.worst = error;
+            agreement.worstSurface = scene.surfaces[mesh.patches[i].surface].name;
+        }
+    }
+    if (agreement.counted > 0) agreement.mean /= static_cast<double>(agreement.counted);
+    return agreement;
+}
+
 void solveTo(Solver& solver, double residual, std::size_t maxSteps = 100000) {
     for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
     REQUIRE(solver.lastStats().residual <= residual);
@@ -202,29 +236,43 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
     check(0.3);
 }
 
-TEST_CASE("Cornell box: block shooters agree with Gauss-Seidel per surface") {
+TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface and patch by patch") {
+    // Same mesh, same kernel, so the converged answers must agree up to visibility sampling. A block
+    // used to shoot its mean radiosity as if uniform over its outline, with visibility rays that ran
+    // into the receiver's own block from beyond its horizon: blocks 2 / 3 / 4 left surfaces up to
+    // 2.9% / 8.5% / 7.4% off (the tall block, dark) and patches 2.2% / 5.7% / 5.3% off on average,
+    // 36-51% at worst (this test fails on that code). Each member now sends its own share of the
+    // power and rays weigh what their member sends (ProgressiveShot.cpp). Measured
+    // (seed 1, 457 lit patches of 577, to 1e-4 as to 1e-5): worst surface 0.46% / 0.59% / 1.8% and
+    // patch mean 0.88% / 1.2% / 1.3% for blocks 2 / 3 / 4; the worst single patch, 14-26%, is the
+    // weak shots' few-ray visibility noise, as with every patch shooting alone (next test).
     const Scene cornell = makeCornellBox();
     const PatchMesh mesh = meshAt(cornell, 0.004);
-    auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh);
+    SolverOptions fine;
+    fine.formFactors.visibilityRays = 64;  // the reference's own penumbra noise well below the bounds
+    auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh, fine);
     solveTo(*reference, 1e-9);
     const std::vector<Rgb> expected = surfaceMeans(mesh, reference->solution());
+    // The default shooter count gives blocks of 3 at this mesh (78 shooters).
     for (const std::size_t block : {std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
         CAPTURE(block);
         ProgressiveOptions progressive;
         progressive.shooterBlock = block;
         auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, progressive);
         REQUIRE(solver->shooters().size() * 2 < mesh.size());
-        // A block shoots its mean radiosity as if uniform: relative to Gauss-Seidel per band, block 2
-        // left surfaces up to 3% dark, blocks 3 and 4 up to 8.6% (the tall block; measured
-        // 2026-12-02). Issue #14 asks for 1%: these bounds record the gap, not the goal.
         solveTo(*solver, 1e-4, 20000);
         const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
-        const double tolerance = block == 2 ? 0.035 : 0.095;
-        for (std::size_t s = 0; s < means.size(); ++s) {
-            CAPTURE(cornell.surfaces[s].name);
+        double worstSurface = 0;
+        for (std::size_t s = 0; s < means.size(); ++s)
             for (int band = 0; band < 3; ++band)
-                CHECK(means[s][band] == doctest::Approx(expected[s][band]).epsilon(tolerance).scale(0));
-        }
+                worstSurface = std::max(worstSurface, std::abs(means[s][band] / expected[s][band] - 1));
+        const PatchAgreement patches = patchAgreement(cornell, mesh, solver->solution(), reference->solution());
+        MESSAGE("block ", block, " (", solver->shooters().size(), " shooters): worst surface ", worstSurface,
+                "; patches ", patches.counted, ": mean ", patches.mean, ", worst ", patches.worst, " on ",
+                patches.worstSurface);
+        CHECK(worstSurface < (block == 4 ? 0.025 : 0.01));
+        CHECK(patches.mean < 0.015);
+        CHECK(patches.worst < 0.3);
     }
 }
 
@@ -233,9 +281,7 @@ TEST_CASE("Cornell box: converged progressive refinement matches Gauss-Seidel pa
     // left is each method's visibility sampling: the light's shots take 16 rays per receiver and 80
     // where they disagree; the many weak shots after them 2-16 each. Measured (seed 1) over 457
     // patches: mean 0.58%, worst 14.7% (a floor patch by the front edge); with 16 + 64 rays for
-    // every shot 0.65% / 10.6%. Block shooters are not held to this: a block shoots its power as
-    // one uniform radiosity (ProgressiveShooters.h), which at this mesh leaves single patches
-    // 50-65% off while surface means stay within 1% (the next test).
+    // every shot 0.65% / 10.6%.
     const Scene cornell = makeCornellBox();
     const PatchMesh mesh = meshAt(cornell, 0.004);
     SolverOptions fine;
@@ -246,29 +292,12 @@ TEST_CASE("Cornell box: converged progressive refinement matches Gauss-Seidel pa
     eachPatch.shooterBlock = 1;
     auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, eachPatch);
     solveTo(*solver, 1e-5, 20000);
-    const auto brightness = [](const Rgb& b) { return b.x + b.y + b.z; };
-    double brightest = 0;
-    for (std::size_t i = 0; i < mesh.size(); ++i)
-        if (brightness(cornell.materials[cornell.surfaces[mesh.patches[i].surface].material].exitance.value()) == 0)
-            brightest = std::max(brightest, brightness(reference->solution()[i]));
-    double worst = 0, sum = 0;
-    std::size_t counted = 0, worstPatch = 0;
-    for (std::size_t i = 0; i < mesh.size(); ++i) {
-        const double expected = brightness(reference->solution()[i]);
-        if (expected < 0.05 * brightest) continue;  // deep shadow: a relative error means little there
-        const double error = std::abs(brightness(solver->solution()[i]) / expected - 1);
-        sum += error;
-        ++counted;
-        if (error > worst) {
-            worst = error;
-            worstPatch = i;
-        }
-    }
-    MESSAGE("patches ", counted, " of ", mesh.size(), ": mean ", sum / static_cast<double>(counted), ", worst ", worst,
-            " at patch ", worstPatch, " on ", cornell.surfaces[mesh.patches[worstPatch].surface].name);
-    CHECK(counted > mesh.size() / 2);
-    CHECK(sum / static_cast<double>(counted) < 0.01);
-    CHECK(worst < 0.2);
+    const PatchAgreement patches = patchAgreement(cornell, mesh, solver->solution(), reference->solution());
+    MESSAGE("patches ", patches.counted, " of ", mesh.size(), ": mean ", patches.mean, ", worst ", patches.worst, " on ",
+            patches.worstSurface);
+    CHECK(patches.counted > mesh.size() / 2);
+    CHECK(patches.mean < 0.01);
+    CHECK(patches.worst < 0.2);
 }
 
 TEST_CASE("block shooting is deterministic for a seed and reports a member of the shot group") {

@@ -433,4 +433,48 @@ TEST_CASE("generations only grow, and the reader never waits for a step") {
     CHECK_FALSE(thread.snapshot()->running);
 }
 
+TEST_CASE("the convergence record overlays methods, cuts a segment at a material edit, and Reset materials restores the scene as loaded") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    const std::shared_ptr<const Scene> loaded = unitPlate();
+    thread.send(command::LoadScene{loaded, MeshingOptions{0.25, 1000}});
+    thread.send(command::SetMethod{SolverMethod::GaussSeidel});
+    // Commands go before pending steps: each step request is waited for before the next command.
+    thread.send(command::Step{3});
+    thread.waitUntilIdle();
+    thread.send(command::SetMethod{SolverMethod::Jacobi});
+    thread.send(command::Step{2});
+    thread.waitUntilIdle();
+    thread.send(command::SetMaterial{0, Rgb(0.25), ExitanceRgb(Rgb(2.0))});
+    thread.send(command::Step{4});
+    thread.waitUntilIdle();
+    auto s = thread.snapshot();
+    std::vector<SegmentView> segments = s->convergence.segments(s->history);
+    REQUIRE(segments.size() == 3);
+    CHECK(segments[0].info->method == SolverMethod::GaussSeidel);
+    CHECK(segments[0].steps->size() == 3);
+    CHECK(segments[1].info->method == SolverMethod::Jacobi);
+    CHECK(segments[1].steps->size() == 2);
+    CHECK(segments[2].info->label == "Jacobi, edit 1: plate");
+    CHECK(segments[2].steps->size() == 4);
+    CHECK(s->history.size() == 4);  // the segment being solved
+    CHECK(s->scene->materials[s->scene->surfaces[0].material].reflectance.x == 0.25);
+
+    thread.send(command::ResetMaterials{});
+    thread.waitUntilIdle();
+    s = thread.snapshot();
+    CHECK(s->scene == loaded);
+    CHECK(s->stats.iteration == 0);  // restarted from B = E
+    segments = s->convergence.segments(s->history);
+    REQUIRE(segments.size() == 1);  // Jacobi's runs went with the restart; Gauss-Seidel's stays
+    CHECK(segments[0].info->method == SolverMethod::GaussSeidel);
+    CHECK(s->convergence.current().label == "Jacobi");
+
+    // The solver has the loaded material again: one step from B = E gives E (1 + rho) = 1.5.
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    s = thread.snapshot();
+    REQUIRE_FALSE(s->radiosity.empty());
+    CHECK(s->radiosity.front().x == doctest::Approx(1.5).scale(0));
+}
+
 } // TEST_SUITE

@@ -1,3 +1,4 @@
+// ctest-labels: threads
 // The Scene panel's worker: loading off the UI thread, errors as text, the result taken once.
 // (Meshing moved to the solver thread: tests/unit/test_solver_thread.cpp.)
 #include <doctest/doctest.h>

@@ -1,4 +1,4 @@
-#include "render/FaceGrids.h"
+#include "render/display/FaceGrids.h"
 
 #include <algorithm>
 #include <cmath>
