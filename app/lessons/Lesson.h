@@ -96,6 +96,10 @@ struct Lesson {
 const std::vector<std::string>& panelTitles();
 const std::vector<std::string>& demoIds();
 
+/// The lessons that ship in <assets>/lessons, in file order (their names are numbered); empty when
+/// the folder is missing.
+std::vector<std::filesystem::path> shippedLessonFiles();
+
 /// Reads and checks a lesson file: JSON syntax, every field's type and range, every scene loads,
 /// every named surface exists in the scene current at that step, every probe point lies on one of
 /// its surfaces. Throws RadiantError naming the file, the step (number and title), the action and

@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -355,6 +356,17 @@ Lesson parseLesson(const std::string& source, const std::filesystem::path& file)
         lesson.steps.push_back(std::move(step));
     }
     return lesson;
+}
+
+std::vector<std::filesystem::path> shippedLessonFiles() {
+    std::vector<std::filesystem::path> files;
+    const std::string assets = assetDirectory();
+    if (assets.empty()) return files;
+    std::error_code error;
+    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(assets) / "lessons", error))
+        if (entry.path().extension() == ".json") files.push_back(entry.path());
+    std::sort(files.begin(), files.end());
+    return files;
 }
 
 Lesson readLesson(const std::filesystem::path& file) {

@@ -9,28 +9,22 @@
 #include <nlohmann/json.hpp>
 
 #include "app/ui/Colours.h"
-#include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
 
 namespace {
 
-/// The lessons in <assets>/lessons with their titles, in file order (the files are numbered).
+/// The shipped lessons with their titles.
 std::vector<std::pair<std::string, std::string>> findShippedLessons() {
     std::vector<std::pair<std::string, std::string>> found;
-    const std::string assets = assetDirectory();
-    if (assets.empty()) return found;
-    std::error_code error;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(assets) / "lessons", error)) {
-        if (entry.path().extension() != ".json") continue;
-        std::string title = entry.path().stem().string();
+    for (const std::filesystem::path& file : lesson::shippedLessonFiles()) {
+        std::string title = file.stem().string();
         // Only the title here: reading the whole lesson loads its scenes, which waits until it is opened.
-        std::ifstream in(entry.path());
+        std::ifstream in(file);
         const nlohmann::json json = nlohmann::json::parse(in, nullptr, false);
         if (json.is_object() && json.contains("title") && json["title"].is_string()) title = json["title"];
-        found.emplace_back(entry.path().string(), title);
+        found.emplace_back(file.string(), title);
     }
-    std::sort(found.begin(), found.end());
     return found;
 }
 

@@ -29,13 +29,7 @@ namespace lesson = radiant::app::lesson;
 
 namespace {
 
-std::vector<std::filesystem::path> shippedLessons() {
-    std::vector<std::filesystem::path> files;
-    for (const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(assetDirectory()) / "lessons"))
-        if (entry.path().extension() == ".json") files.push_back(entry.path());
-    std::sort(files.begin(), files.end());
-    return files;
-}
+std::vector<std::filesystem::path> shippedLessons() { return lesson::shippedLessonFiles(); }
 
 LabOptions lessonLab() {
     LabOptions options;

@@ -26,6 +26,7 @@
 #include "radiometry/probe/Probe.h"
 #include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/solver/Solver.h"
+#include "tests/support/RunRadiant.h"
 
 using namespace radiant;
 namespace fs = std::filesystem;
@@ -79,28 +80,8 @@ Solved solve(const std::string& file, double maxPatchArea) {
     return solved;
 }
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-/// Runs the radiant binary with `arguments`; stdout and stderr apart; `timeout` ends a hang.
-Run runRadiant(const std::string& arguments) {
-    const std::string errFile = (fs::temp_directory_path() / ("radiant-blender-" + std::to_string(::getpid()) + ".err")).string();
-    const std::string command = "timeout 20 '" + std::string(RADIANT_BINARY) + "' " + arguments + " 2>'" + errFile + "'";
-    Run run;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 512> chunk{};
-    while (std::fgets(chunk.data(), static_cast<int>(chunk.size()), pipe)) run.out += chunk.data();
-    const int status = pclose(pipe);
-    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(errFile);
-    run.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    fs::remove(errFile);
-    return run;
-}
+using Run = test::CommandRun;
+using test::runRadiant;
 
 std::size_t lineCount(const std::string& text) { return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n')); }
 

@@ -31,6 +31,7 @@
 #include "radiometry/solver/Solver.h"
 #include "radiometry/units/Photometry.h"
 #include "tests/support/Relative.h"
+#include "tests/support/RunRadiant.h"
 
 using namespace radiant;
 using radiant::test::relativeTo;
@@ -100,27 +101,8 @@ Solution solve(const std::string& file, SolverMethod method, double maxPatchArea
     return s;
 }
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-Run runRadiant(const std::string& arguments) {
-    const std::string errFile = (fs::temp_directory_path() / ("radiant-lights-" + std::to_string(::getpid()) + ".err")).string();
-    const std::string command = "timeout 60 '" + std::string(RADIANT_BINARY) + "' " + arguments + " 2>'" + errFile + "'";
-    Run run;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 512> chunk{};
-    while (std::fgets(chunk.data(), static_cast<int>(chunk.size()), pipe)) run.out += chunk.data();
-    const int status = pclose(pipe);
-    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(errFile);
-    run.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    fs::remove(errFile);
-    return run;
-}
+using Run = test::CommandRun;
+using test::runRadiant;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
