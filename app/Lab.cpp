@@ -7,16 +7,16 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <ctime>
 #include <filesystem>
-#include <fstream>
-#include <numbers>
 #include <optional>
 
 #include "app/panels/DisplayPanel.h"
 #include "app/panels/HemicubeSession.h"
 #include "app/panels/HemispherePanel.h"
 #include "app/lessons/Lesson.h"
+#include "app/LabLessonStage.h"
+#include "app/LabScene.h"
+#include "app/lessons/LessonCaption.h"
 #include "app/lessons/SessionFile.h"
 #include "app/panels/InfoPanel.h"
 #include "app/panels/LessonsPanel.h"
@@ -40,13 +40,11 @@
 #include "app/window/Window.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/probe/Probe.h"
-#include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/scene/View.h"
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
 #include "render/overlay/DepthVisibility.h"
-#include "render/camera/HomeCamera.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -56,24 +54,10 @@ namespace {
 // with the walls' and the box's edges stay visible where they meet the background.
 const glm::vec3 kBackground{kBackdrop.r, kBackdrop.g, kBackdrop.b};
 
-std::shared_ptr<const Scene> openScene(const std::string& nameOrPath) {
-    LoadedScene loaded = loadScene(nameOrPath);
-    for (const std::string& warning : loaded.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
-    return std::make_shared<const Scene>(std::move(loaded.scene));
-}
-
 std::string sceneLabel(const std::string& sceneName) { return std::filesystem::path(sceneName).filename().string(); }
 
 std::string windowTitle(const std::string& sceneName, SolverMethod method) {
     return "Radiant - " + sceneLabel(sceneName) + " - " + methodLabel(method);
-}
-
-/// The scene's one home camera (render/camera/HomeCamera.h), orbiting the centre of its bounds.
-render::OrbitCamera orbitFromHome(const Scene& scene) {
-    glm::dvec3 lo, hi;
-    const render::Camera home = render::homeCamera(scene);
-    if (!sceneBounds(scene, lo, hi)) return render::OrbitCamera(home, home.eye + home.forward);
-    return render::OrbitCamera(home, (lo + hi) / 2.0);
 }
 
 } // namespace
@@ -327,7 +311,7 @@ struct Lab::State {
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
-        drawLessonCaption(viewInUiUnits);
+        drawLessonCaption(lessons, viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
@@ -372,156 +356,15 @@ struct Lab::State {
     /// Writes the lab's state as a session file (SessionFile.h): to `path`, or when it is empty to
     /// radiant-session-YYYYMMDD-HHMMSS.json in the working folder. Returns where it went.
     std::filesystem::path saveSession(const std::string& path) {
-        const Snapshot& s = live.snapshot();
-        if (!s.scene) throw RadiantError({"session", ""}, "no scene is shown yet");
-        lesson::SessionState state;
-        bool builtin = false;
-        for (const std::string& name : builtinSceneNames()) builtin = builtin || name == s.scene->name;
-        state.scene = builtin ? s.scene->name : std::filesystem::absolute(s.scene->name).lexically_normal().string();
-        state.maxPatchAreaM2 = s.meshing.maxPatchArea;
-        state.method = s.method;
-        state.tolerance = s.tolerance;
-        state.linkTolerance = s.linkTolerance;
-        for (const Surface& surface : s.scene->surfaces) {
-            const Material& m = s.scene->materials[surface.material];
-            const Rgb e = m.exitance.value();
-            state.materials.push_back({surface.name, lesson::Triple{m.reflectance.x, m.reflectance.y, m.reflectance.z},
-                                       lesson::Triple{e.x, e.y, e.z}});
-        }
-        const render::Camera camera = orbit.camera();
-        const glm::dvec3 pivot = orbit.pivot();
-        state.camera = {false, {camera.eye.x, camera.eye.y, camera.eye.z}, {pivot.x, pivot.y, pivot.z},
-                        camera.fieldOfView.value() * 180.0 / std::numbers::pi};
-        if (const std::optional<ProbePick>& pick = probePanel->picked()) {
-            lesson::Probe probe{{pick->point.x, pick->point.y, pick->point.z},
-                                lesson::Triple{pick->normal.x, pick->normal.y, pick->normal.z}, std::nullopt};
-            if (const std::optional<ProbeReading>& reading = probePanel->reading(); reading && reading->target)
-                probe.target = reading->target->name;
-            state.probe = probe;
-        }
-        state.display.colour = display.colourMode == render::ColourMode::FalseColour   ? "false-colour"
-                               : display.colourMode == render::ColourMode::Reflectance ? "reflectance"
-                                                                                       : "tone-mapped";
-        state.display.links = display.showLinks;
-        state.display.importance = display.showImportance;
-        state.display.wireframe = display.wireframe;
-        state.display.isolines = display.isolines;
-        state.display.exposureStops = display.exposureStops;
-
-        const std::time_t now = std::time(nullptr);
-        std::tm local{};
-        localtime_r(&now, &local);
-        char stamp[32], readable[32];
-        std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
-        std::strftime(readable, sizeof readable, "%Y-%m-%d %H:%M:%S", &local);
-        const std::filesystem::path file = path.empty() ? std::filesystem::path("radiant-session-" + std::string(stamp) + ".json")
-                                                        : std::filesystem::path(path);
-        std::ofstream out(file);
-        if (!out) throw RadiantError({file.string(), ""}, "cannot open for writing");
-        out << lesson::sessionText(state, readable);
-        if (!out) throw RadiantError({file.string(), ""}, "write failed");
-        return std::filesystem::absolute(file);
+        std::optional<std::string> target;
+        if (const std::optional<ProbeReading>& reading = probePanel->reading(); reading && reading->target)
+            target = reading->target->name;
+        return lesson::writeSession(
+            lesson::captureSession(live.snapshot(), orbit.camera(), orbit.pivot(), probePanel->picked(), target, display),
+            path);
     }
 
-    /// The step's title and caption, large, in the 3D view's lower left corner: what the lecturer
-    /// talks about, readable from the back of the room.
-    void drawLessonCaption(const render::Viewport& view) const {
-        if (!lessons.isOpen() || lessons.lesson().session) return;
-        const lesson::LessonStep& step = lessons.lesson().steps[lessons.step()];
-        const float margin = ImGui::GetFontSize();
-        const float width = std::max(12 * margin, std::min(0.7f * static_cast<float>(view.width), 40 * margin));
-        ImGui::SetNextWindowPos({static_cast<float>(view.x) + margin, static_cast<float>(view.y + view.height) - 2.5f * margin},
-                                ImGuiCond_Always, {0.0f, 1.0f});
-        ImGui::SetNextWindowSizeConstraints({0, 0}, {width, static_cast<float>(view.height) * 0.6f});
-        ImGui::SetNextWindowBgAlpha(0.72f);
-        ImGui::Begin("##lesson caption", nullptr,
-                     ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
-                         ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
-        ImGui::SetWindowFontScale(1.35f);
-        ImGui::PushTextWrapPos(width - margin);
-        ImGui::TextUnformatted(step.title.c_str());
-        ImGui::SetWindowFontScale(1.15f);
-        ImGui::TextUnformatted(step.caption.c_str());
-        ImGui::SetWindowFontScale(0.9f);
-        ImGui::TextDisabled("%s - step %zu of %zu - Page Down: next, Page Up: back", lessons.lesson().title.c_str(),
-                            lessons.step() + 1, lessons.stepCount());
-        ImGui::PopTextWrapPos();
-        ImGui::End();
-    }
 
-    /// What a lesson acts on: the lab's solver thread, camera, panels and display.
-    struct Stage final : LessonStage {
-        explicit Stage(State& owner) : lab(owner) {}
-        void loadScene(const std::string& nameOrPath) override {
-            scene = openScene(nameOrPath);
-            awaitedAfter = lab.live.snapshot().meshGeneration;
-            lab.live.send(command::LoadScene{scene, MeshingOptions{lab.patchArea}});
-        }
-        void remesh(double maxPatchAreaM2) override {
-            lab.patchArea = maxPatchAreaM2;
-            awaitedAfter = lab.live.snapshot().meshGeneration;
-            lab.live.send(command::Remesh{MeshingOptions{maxPatchAreaM2}});
-        }
-        [[nodiscard]] bool sceneReady() const override {
-            const Snapshot& s = lab.live.snapshot();
-            return s.scene && s.mesh && s.meshGeneration > awaitedAfter && (!scene || s.scene->name == scene->name);
-        }
-        void openDemo(const std::string& id) override {
-            const std::vector<std::string>& ids = lesson::demoIds();
-            const auto found = std::find(ids.begin(), ids.end(), id);
-            lab.demosPanel->focus(static_cast<std::size_t>(found - ids.begin()));
-            lab.sidebar.focus("Lecture demos");
-        }
-        void send(SolverCommand command) override { lab.live.send(std::move(command)); }
-        void setMaterial(const lesson::SetMaterial& edit) override {
-            const Scene& shown = *lab.live.snapshot().scene;
-            const std::size_t surface = shown.findSurface(edit.surface);
-            if (surface == Scene::npos)
-                throw RadiantError({shown.name, "material"}, "no surface '" + edit.surface + "' in the scene shown");
-            const Material& material = shown.materials[shown.surfaces[surface].material];
-            const auto rgb = [](const lesson::Triple& t) { return Rgb(t[0], t[1], t[2]); };
-            const std::string refused =
-                MaterialsPanel::submit(lab.live, surface, edit.reflectance ? rgb(*edit.reflectance) : material.reflectance,
-                                       edit.exitanceW_m2 ? rgb(*edit.exitanceW_m2) : material.exitance.value());
-            if (!refused.empty()) throw RadiantError({shown.name, "material '" + edit.surface + "'"}, refused);
-        }
-        void placeCamera(const lesson::PlaceCamera& place) override {
-            if (place.home) {
-                lab.orbit = orbitFromHome(*lab.live.snapshot().scene);
-                return;
-            }
-            render::Camera camera;
-            camera.eye = {place.eye[0], place.eye[1], place.eye[2]};
-            const glm::dvec3 target{place.target[0], place.target[1], place.target[2]};
-            camera.forward = glm::normalize(target - camera.eye);
-            camera.fieldOfView = Radians(place.fieldOfViewDegrees * std::numbers::pi / 180.0);
-            lab.orbit = render::OrbitCamera(camera, target);
-        }
-        bool probe(const lesson::Probe& at) override {
-            const glm::dvec3 point{at.point[0], at.point[1], at.point[2]};
-            std::vector<glm::dvec3> normals;
-            if (at.normal) normals.push_back(glm::normalize(glm::dvec3{(*at.normal)[0], (*at.normal)[1], (*at.normal)[2]}));
-            else normals = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
-            // A short ray onto the point from its front: the same pick a click there makes.
-            for (const glm::dvec3& n : normals) {
-                if (!lab.probePanel->pick(point + 0.01 * n, -n)) continue;
-                const std::optional<ProbePick>& pick = lab.probePanel->picked();
-                if (!pick || glm::length(pick->point - point) > 1e-3) continue;
-                if (at.target) {
-                    const std::size_t target = lab.live.snapshot().scene->findSurface(*at.target);
-                    if (target != Scene::npos) lab.probePanel->setTarget(target);
-                }
-                return true;
-            }
-            return false;
-        }
-        void openPanel(const std::string& title) override { lab.sidebar.focus(title); }
-        render::DisplaySettings& display() override { return lab.display; }
-
-        State& lab;
-        std::shared_ptr<const Scene> scene;  ///< the scene the lesson loaded last
-        std::uint64_t awaitedAfter = 0;      ///< the mesh generation shown when the lesson asked for a new one
-    };
 
     void saveScreenshot(const render::ImageRgb8& image) {
         screenshotRequested = false;
@@ -552,7 +395,7 @@ struct Lab::State {
     LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
     double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with
     LessonPlayer lessons;
-    Stage stage{*this};
+    LabLessonStage stage{live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea};
     std::string lessonError;
     FrameStats frames;
     Sidebar sidebar;

@@ -1,7 +1,13 @@
 #include "app/lessons/SessionFile.h"
 
+#include <ctime>
+#include <fstream>
+#include <numbers>
+
 #include <nlohmann/json.hpp>
 
+#include "radiometry/common/Error.h"
+#include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app::lesson {
@@ -54,6 +60,57 @@ std::string sessionText(const SessionState& state, const std::string& savedAt) {
                        {"caption", "The lab as it was saved; the solution is solved again on opening."},
                        {"actions", actions}}})}};
     return session.dump(2) + "\n";
+}
+
+SessionState captureSession(const Snapshot& shown, const render::Camera& camera, const glm::dvec3& pivot,
+                            const std::optional<ProbePick>& pick, const std::optional<std::string>& target,
+                            const render::DisplaySettings& display) {
+    if (!shown.scene) throw RadiantError({"session", ""}, "no scene is shown yet");
+    SessionState state;
+    bool builtin = false;
+    for (const std::string& name : builtinSceneNames()) builtin = builtin || name == shown.scene->name;
+    // A file by its absolute path, so the session opens from any folder.
+    state.scene = builtin ? shown.scene->name : std::filesystem::absolute(shown.scene->name).lexically_normal().string();
+    state.maxPatchAreaM2 = shown.meshing.maxPatchArea;
+    state.method = shown.method;
+    state.tolerance = shown.tolerance;
+    state.linkTolerance = shown.linkTolerance;
+    for (const Surface& surface : shown.scene->surfaces) {
+        const Material& m = shown.scene->materials[surface.material];
+        const Rgb e = m.exitance.value();
+        state.materials.push_back(
+            {surface.name, Triple{m.reflectance.x, m.reflectance.y, m.reflectance.z}, Triple{e.x, e.y, e.z}});
+    }
+    state.camera = {false, {camera.eye.x, camera.eye.y, camera.eye.z}, {pivot.x, pivot.y, pivot.z},
+                    camera.fieldOfView.value() * 180.0 / std::numbers::pi};
+    if (pick)
+        state.probe = Probe{{pick->point.x, pick->point.y, pick->point.z},
+                            Triple{pick->normal.x, pick->normal.y, pick->normal.z}, target};
+    state.display.colour = display.colourMode == render::ColourMode::FalseColour   ? "false-colour"
+                           : display.colourMode == render::ColourMode::Reflectance ? "reflectance"
+                                                                                   : "tone-mapped";
+    state.display.links = display.showLinks;
+    state.display.importance = display.showImportance;
+    state.display.wireframe = display.wireframe;
+    state.display.isolines = display.isolines;
+    state.display.exposureStops = display.exposureStops;
+    return state;
+}
+
+std::filesystem::path writeSession(const SessionState& state, const std::string& path) {
+    const std::time_t now = std::time(nullptr);
+    std::tm local{};
+    localtime_r(&now, &local);
+    char stamp[32], readable[32];
+    std::strftime(stamp, sizeof stamp, "%Y%m%d-%H%M%S", &local);
+    std::strftime(readable, sizeof readable, "%Y-%m-%d %H:%M:%S", &local);
+    const std::filesystem::path file =
+        path.empty() ? std::filesystem::path("radiant-session-" + std::string(stamp) + ".json") : std::filesystem::path(path);
+    std::ofstream out(file);
+    if (!out) throw RadiantError({file.string(), ""}, "cannot open for writing");
+    out << sessionText(state, readable);
+    if (!out) throw RadiantError({file.string(), ""}, "write failed");
+    return std::filesystem::absolute(file);
 }
 
 } // namespace radiant::app::lesson

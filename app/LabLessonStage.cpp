@@ -1,0 +1,91 @@
+#include "app/LabLessonStage.h"
+
+#include <algorithm>
+#include <numbers>
+#include <optional>
+#include <vector>
+
+#include "app/LabScene.h"
+#include "app/lessons/Lesson.h"
+#include "app/panels/MaterialsPanel.h"
+#include "app/panels/ProbePanel.h"
+#include "app/panels/demos/LectureDemosPanel.h"
+#include "app/ui/Sidebar.h"
+#include "radiometry/common/Error.h"
+
+namespace radiant::app {
+
+void LabLessonStage::loadScene(const std::string& nameOrPath) {
+    scene_ = openScene(nameOrPath);
+    awaitedAfter_ = live_.snapshot().meshGeneration;
+    live_.send(command::LoadScene{scene_, MeshingOptions{patchArea_}});
+}
+
+void LabLessonStage::remesh(double maxPatchAreaM2) {
+    patchArea_ = maxPatchAreaM2;
+    awaitedAfter_ = live_.snapshot().meshGeneration;
+    live_.send(command::Remesh{MeshingOptions{maxPatchAreaM2}});
+}
+
+bool LabLessonStage::sceneReady() const {
+    const Snapshot& s = live_.snapshot();
+    return s.scene && s.mesh && s.meshGeneration > awaitedAfter_ && (!scene_ || s.scene->name == scene_->name);
+}
+
+void LabLessonStage::openDemo(const std::string& id) {
+    const std::vector<std::string>& ids = lesson::demoIds();
+    const auto found = std::find(ids.begin(), ids.end(), id);
+    demos_.focus(static_cast<std::size_t>(found - ids.begin()));
+    sidebar_.focus("Lecture demos");
+}
+
+void LabLessonStage::send(SolverCommand command) { live_.send(std::move(command)); }
+
+void LabLessonStage::setMaterial(const lesson::SetMaterial& edit) {
+    const Scene& shown = *live_.snapshot().scene;
+    const std::size_t surface = shown.findSurface(edit.surface);
+    if (surface == Scene::npos)
+        throw RadiantError({shown.name, "material"}, "no surface '" + edit.surface + "' in the scene shown");
+    const Material& material = shown.materials[shown.surfaces[surface].material];
+    const auto rgb = [](const lesson::Triple& t) { return Rgb(t[0], t[1], t[2]); };
+    const std::string refused =
+        MaterialsPanel::submit(live_, surface, edit.reflectance ? rgb(*edit.reflectance) : material.reflectance,
+                               edit.exitanceW_m2 ? rgb(*edit.exitanceW_m2) : material.exitance.value());
+    if (!refused.empty()) throw RadiantError({shown.name, "material '" + edit.surface + "'"}, refused);
+}
+
+void LabLessonStage::placeCamera(const lesson::PlaceCamera& place) {
+    if (place.home) {
+        orbit_ = orbitFromHome(*live_.snapshot().scene);
+        return;
+    }
+    render::Camera camera;
+    camera.eye = {place.eye[0], place.eye[1], place.eye[2]};
+    const glm::dvec3 target{place.target[0], place.target[1], place.target[2]};
+    camera.forward = glm::normalize(target - camera.eye);
+    camera.fieldOfView = Radians(place.fieldOfViewDegrees * std::numbers::pi / 180.0);
+    orbit_ = render::OrbitCamera(camera, target);
+}
+
+bool LabLessonStage::probe(const lesson::Probe& at) {
+    const glm::dvec3 point{at.point[0], at.point[1], at.point[2]};
+    std::vector<glm::dvec3> normals;
+    if (at.normal) normals.push_back(glm::normalize(glm::dvec3{(*at.normal)[0], (*at.normal)[1], (*at.normal)[2]}));
+    else normals = {{0, 1, 0}, {0, -1, 0}, {1, 0, 0}, {-1, 0, 0}, {0, 0, 1}, {0, 0, -1}};
+    // A short ray onto the point from its front: the same pick a click there makes.
+    for (const glm::dvec3& n : normals) {
+        if (!probe_.pick(point + 0.01 * n, -n)) continue;
+        const std::optional<ProbePick>& pick = probe_.picked();
+        if (!pick || glm::length(pick->point - point) > 1e-3) continue;
+        if (at.target) {
+            const std::size_t target = live_.snapshot().scene->findSurface(*at.target);
+            if (target != Scene::npos) probe_.setTarget(target);
+        }
+        return true;
+    }
+    return false;
+}
+
+void LabLessonStage::openPanel(const std::string& title) { sidebar_.focus(title); }
+
+} // namespace radiant::app
