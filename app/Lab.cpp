@@ -129,6 +129,7 @@ struct Lab::State {
         });
         lessonsPanel = lessonList.get();
         sidebar.add(std::move(lessonList));
+        stage.emplace(live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea);
 
         live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
         if (options.runOnStart) live.send(command::Run{});
@@ -289,7 +290,7 @@ struct Lab::State {
         stream();
         if (display.uiScale > 0 && display.uiScale != ui->uiScale()) ui->setUiScale(display.uiScale);
         sidebar.update();
-        if (std::optional<std::string> refused = lessons.update(stage)) {
+        if (std::optional<std::string> refused = lessons.update(*stage)) {
             lessonError = *refused;
             message = *refused;
         }
@@ -395,7 +396,7 @@ struct Lab::State {
     LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
     double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with
     LessonPlayer lessons;
-    LabLessonStage stage{live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea};
+    std::optional<LabLessonStage> stage;  ///< made once the panels it drives exist
     std::string lessonError;
     FrameStats frames;
     Sidebar sidebar;

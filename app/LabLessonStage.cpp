@@ -16,20 +16,24 @@
 namespace radiant::app {
 
 void LabLessonStage::loadScene(const std::string& nameOrPath) {
-    scene_ = openScene(nameOrPath);
+    awaitedScene_ = openScene(nameOrPath);
     awaitedAfter_ = live_.snapshot().meshGeneration;
-    live_.send(command::LoadScene{scene_, MeshingOptions{patchArea_}});
+    live_.send(command::LoadScene{awaitedScene_, MeshingOptions{patchArea_}});
 }
 
 void LabLessonStage::remesh(double maxPatchAreaM2) {
     patchArea_ = maxPatchAreaM2;
+    awaitedScene_.reset();  // the shown scene, whatever its materials
     awaitedAfter_ = live_.snapshot().meshGeneration;
     live_.send(command::Remesh{MeshingOptions{maxPatchAreaM2}});
 }
 
 bool LabLessonStage::sceneReady() const {
     const Snapshot& s = live_.snapshot();
-    return s.scene && s.mesh && s.meshGeneration > awaitedAfter_ && (!scene_ || s.scene->name == scene_->name);
+    // The very scene object sent (the solver thread publishes the pointer it was given): a name would
+    // also match the lab's own load of the same scene still on its way, whose mesh then replaces
+    // the one a probe was picked on.
+    return s.scene && s.mesh && s.meshGeneration > awaitedAfter_ && (!awaitedScene_ || s.scene == awaitedScene_);
 }
 
 void LabLessonStage::openDemo(const std::string& id) {

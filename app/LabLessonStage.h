@@ -44,7 +44,7 @@ private:
     render::OrbitCamera& orbit_;
     render::DisplaySettings& display_;
     double& patchArea_;
-    std::shared_ptr<const Scene> scene_;  ///< the scene the lesson loaded last
+    std::shared_ptr<const Scene> awaitedScene_;  ///< the scene a load waits to see shown; null after a remesh
     std::uint64_t awaitedAfter_ = 0;      ///< the mesh generation shown when the lesson asked for a new one
 };
 

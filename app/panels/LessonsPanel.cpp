@@ -28,6 +28,20 @@ std::vector<std::pair<std::string, std::string>> findShippedLessons() {
     return found;
 }
 
+/// A selectable row whose text wraps at the sidebar's edge (a lesson's or a step's title can be
+/// longer than the sidebar is wide, more so at a projector's UI scale).
+bool wrappedSelectable(const void* id, const std::string& text, bool selected) {
+    const float width = ImGui::GetContentRegionAvail().x;
+    const ImVec2 textSize = ImGui::CalcTextSize(text.c_str(), nullptr, false, width);
+    const ImVec2 at = ImGui::GetCursorScreenPos();
+    ImGui::PushID(id);
+    const bool clicked = ImGui::Selectable("##row", selected, 0, ImVec2(width, textSize.y));
+    ImGui::PopID();
+    ImGui::GetWindowDrawList()->AddText(ImGui::GetFont(), ImGui::GetFontSize(), at, ImGui::GetColorU32(ImGuiCol_Text),
+                                        text.c_str(), nullptr, width);
+    return clicked;
+}
+
 } // namespace
 
 LessonsPanel::LessonsPanel(LessonPlayer& player, std::function<std::string(const std::string&)> open)
@@ -43,7 +57,7 @@ void LessonsPanel::draw() {
     if (shipped_.empty()) ImGui::TextDisabled("No lessons found in the assets folder.");
     for (const Shipped& lesson : shipped_) {
         const bool current = player_.isOpen() && !player_.lesson().session && player_.lesson().file == lesson.path;
-        if (ImGui::Selectable(lesson.title.c_str(), current)) error_ = open_(lesson.path);
+        if (wrappedSelectable(&lesson, lesson.title, current)) error_ = open_(lesson.path);
     }
     ImGui::Spacing();
     ImGui::SetNextItemWidth(-ImGui::CalcTextSize("Open").x - 3 * ImGui::GetStyle().FramePadding.x -
@@ -82,7 +96,7 @@ void LessonsPanel::drawLesson() {
     }
     for (std::size_t i = 0; i < lesson.steps.size(); ++i) {
         const std::string label = std::to_string(i + 1) + ". " + lesson.steps[i].title;
-        if (ImGui::Selectable(label.c_str(), i == player_.step())) player_.goTo(i);
+        if (wrappedSelectable(&lesson.steps[i], label, i == player_.step())) player_.goTo(i);
     }
 }
 

@@ -1,6 +1,8 @@
 #include "radiometry/scene/EnergyBalance.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <glm/common.hpp>
 #include <string>
 
@@ -9,6 +11,20 @@
 namespace radiant {
 
 double luminanceOf(const Rgb& rgb) { return 0.2126 * rgb.x + 0.7152 * rgb.y + 0.0722 * rgb.z; }
+
+Rgb lightPower(const PunctualLight& light, double sceneAreaM2) {
+    switch (light.type) {
+    case PunctualLightType::Point: return 4 * std::numbers::pi * light.intensity.value();
+    case PunctualLightType::Spot: {
+        // With u = cos(angle off the axis), d omega = 2 pi du; the falloff is 1 above cos inner and
+        // ((u - cos outer) / (cos inner - cos outer))^2 down to cos outer, whose integral is a third.
+        const double ci = std::cos(light.innerConeAngle), co = std::cos(light.outerConeAngle);
+        return 2 * std::numbers::pi * ((1 - ci) + (ci - co) / 3) * light.intensity.value();
+    }
+    case PunctualLightType::Directional: return sceneAreaM2 / 4 * light.normalIrradiance.value();
+    }
+    return Rgb(0.0);
+}
 
 EnergyBalance enclosureEnergyBalance(const Scene& scene, std::span<const std::uint32_t> patchSurface,
                                      std::span<const double> patchAreaM2) {
@@ -29,6 +45,9 @@ EnergyBalance enclosureEnergyBalance(const Scene& scene, std::span<const std::ui
         emitted += patchAreaM2[p] * material.exitance.value();
         absorbing += patchAreaM2[p] * (Rgb(1.0) - material.reflectance);
     }
+    double totalArea = 0;
+    for (const double a : patchAreaM2) totalArea += a;
+    for (const PunctualLight& light : scene.lights) emitted += lightPower(light, totalArea);
     // A band nothing absorbs (all reflectances 1) has no balance; the floor keeps it finite.
     const Rgb meanIrradiance = emitted / glm::max(absorbing, Rgb(1e-12));
     Rgb reflectorSum(0.0), emitterSum(0.0);

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+#include <numbers>
 #include <set>
 #include <vector>
 
@@ -115,6 +116,45 @@ TEST_CASE("energy balance: the furnace settles at E / (1 - rho), an emitter and 
 
     const std::vector<std::uint32_t> bad{0, 7, 1};
     CHECK_THROWS_AS(enclosureEnergyBalance(room, bad, area), RadiantError);
+
+    // Lit only by a point light of I = 2 W/sr: all 4 pi I is absorbed by 4 m^2 of rho = 0.8, so
+    // H = 8 pi / (4 * 0.2) and the walls leave with 0.8 H.
+    Scene lamp;
+    lamp.name = "point light and walls";
+    lamp.materials = {{"wall", Rgb(0.8), ExitanceRgb{}}};
+    lamp.surfaces = {{"wall", 0, {}, "test"}};
+    PunctualLight bulb;
+    bulb.intensity = IntensityRgb(Rgb(2.0));
+    lamp.lights.push_back(bulb);
+    const std::vector<std::uint32_t> walls{0, 0};
+    const std::vector<double> wallArea{1.5, 2.5};
+    const EnergyBalance lit = enclosureEnergyBalance(lamp, walls, wallArea);
+    CHECK(lit.anythingEmits);
+    CHECK(lit.meanRadiosityW_m2.x == relativeTo(0.8 * 4 * std::numbers::pi * 2.0 / (4 * 0.2), 1e-12));
+}
+
+TEST_CASE("a light's power: a point's 4 pi I, a spot's cone by glTF's falloff, a sun's over the scene's mean projected area") {
+    PunctualLight spot;
+    spot.type = PunctualLightType::Spot;
+    spot.intensity = IntensityRgb(Rgb(1.0));
+    spot.innerConeAngle = 0.3;
+    spot.outerConeAngle = 0.6;
+    // The falloff integrated numerically over the cone (midpoint rule in the angle), as glTF defines it.
+    double numeric = 0;
+    constexpr int kSteps = 200000;
+    for (int i = 0; i < kSteps; ++i) {
+        const double a = (i + 0.5) * 0.6 / kSteps;
+        const double t = std::clamp((std::cos(a) - std::cos(0.6)) / (std::cos(0.3) - std::cos(0.6)), 0.0, 1.0);
+        numeric += 2 * std::numbers::pi * t * t * std::sin(a) * 0.6 / kSteps;
+    }
+    CHECK(lightPower(spot, 1.0).x == relativeTo(numeric, 1e-8));
+    PunctualLight point;
+    point.intensity = IntensityRgb(Rgb(3.0));
+    CHECK(lightPower(point, 1.0).y == relativeTo(12 * std::numbers::pi, 1e-12));
+    PunctualLight sun;
+    sun.type = PunctualLightType::Directional;
+    sun.normalIrradiance = IrradianceRgb(Rgb(100.0));
+    CHECK(lightPower(sun, 8.0).z == relativeTo(200.0, 1e-12));
 }
 
 TEST_CASE("the exposure key: the furnace's E / (1 - rho) from the emitters, held while light spreads, or automatic") {
