@@ -211,8 +211,11 @@ struct Lab::State {
             line.activity = std::string(activityName(activity));
             line.fraction = solverThread.progress().fraction();
         }
-        char text[160];
-        if (s.stats.iteration == 0)
+        char text[320];
+        if (s.stats.iteration == 0 && !s.methodReason.empty())  // the default by size: say why
+            std::snprintf(text, sizeof text, "%s (%s) - %s", methodLabel(s.method), s.methodReason.c_str(),
+                          s.running ? "starting" : "ready");
+        else if (s.stats.iteration == 0)
             std::snprintf(text, sizeof text, "%s - %s", methodLabel(s.method), s.running ? "starting" : "ready");
         else
             std::snprintf(text, sizeof text, "%s - iteration %zu - residual %.2e%s", methodLabel(s.method),

@@ -12,6 +12,8 @@
 #include "generated/Version.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/SolveDefaults.h"
+#include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
 
@@ -30,6 +32,19 @@ Scene loadSceneArgument(const std::string& nameOrPath) {
     Scene scene = loadScene(nameOrPath).scene;
     for (const std::string& warning : scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
     return scene;
+}
+
+MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing,
+                              double matrixBudgetBytes) {
+    if (!named.empty()) return {parseMethod(named), ""};
+    MethodChoice choice = chooseDefaultMethod(scene, meshing, matrixBudgetBytes);
+    std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(choice.method)).c_str(), choice.reason.c_str());
+    return choice;
+}
+
+std::string methodOptionHelp() {
+    return methodNameList() + "; default: " + std::string(methodName(kSolveDefaults.method)) + " up to " +
+           std::to_string(kMatrixMethodMaxPatches) + " patches (while its matrix fits), hierarchical beyond";
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {

@@ -5,7 +5,9 @@
 #include <string>
 #include <vector>
 
+#include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/solver/DefaultMethod.h"
 
 namespace CLI {
 class App;
@@ -33,6 +35,14 @@ struct Subcommand {
 /// The SCENE argument of every subcommand (a built-in name or a glTF path), its loader warnings
 /// printed on stderr, one line each. Throws RadiantError as loadScene does.
 Scene loadSceneArgument(const std::string& nameOrPath);
+
+/// The --method of solve, probe and render: the one named, else the default for the scene's size
+/// (DefaultMethod.h), said on stderr in one line ("radiant: method: hierarchical (12,000 patches:
+/// ...)"). The reason is empty for a named method.
+MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing,
+                              double matrixBudgetBytes);
+/// The --method help: the names and how the default is chosen.
+std::string methodOptionHelp();
 
 /// Writes `text` to `path`, or to standard output for "-"; a file that cannot be written is a
 /// RadiantError naming it and the option it came from.

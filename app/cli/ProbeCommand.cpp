@@ -39,7 +39,7 @@ struct ProbeCommandOptions {
     std::string point;
     std::string normal;
     std::string target;  ///< empty: the first emitting surface
-    std::string method{methodName(kSolveDefaults.method)};
+    std::string method;  ///< empty: chosen by the scene's size (DefaultMethod.h)
     double maxPatchArea = kSolveDefaults.maxPatchArea;
     double tolerance = kSolveDefaults.tolerance;
     std::size_t maxIterations = kSolveDefaults.maxIterations;
@@ -77,12 +77,14 @@ int runProbe(const ProbeCommandOptions& options) {
         throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
     if (!(options.linkTolerance > 0))
         throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
-    const SolverMethod method = parseMethod(options.method);
+    if (!options.method.empty()) (void)parseMethod(options.method);  // a bad name fails before the load
 
     const Scene scene = loadSceneArgument(options.scene);
     const std::optional<std::size_t> target = chooseTarget(scene, options.target);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
+    const MethodChoice choice = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes);
+    const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
@@ -125,6 +127,7 @@ int runProbe(const ProbeCommandOptions& options) {
     nlohmann::json out;
     out["scene"] = scene.name;
     out["method"] = std::string(methodName(method));
+    out["method_reason"] = choice.reason.empty() ? std::string("given by --method") : choice.reason;
     out["solution"] = solution;
     out["iterations"] = iterations;
     if (solution == "solved") out["residual"] = residual;
@@ -168,8 +171,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--point", options->point, "X,Y,Z on a surface, metres")->required();
     sub->add_option("--normal", options->normal, "X,Y,Z: the probe's facing direction")->required();
     sub->add_option("--target", options->target, "surface to measure (default: the first emitting surface; none in a scene lit only by lights)");
-    sub->add_option("--method", options->method, methodNameList())
-        ->capture_default_str();
+    sub->add_option("--method", options->method, methodOptionHelp());
     sub->add_option("--max-patch-area", options->maxPatchArea, "m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();

@@ -32,7 +32,7 @@ struct RenderOptions {
     std::string png;
     int width = 1600;
     int height = 1000;
-    std::string method{methodName(kSolveDefaults.method)};
+    std::string method;  ///< empty: chosen by the scene's size (DefaultMethod.h)
     double maxPatchArea = kSolveDefaults.maxPatchArea;
     double tolerance = kSolveDefaults.tolerance;
     std::size_t maxIterations = kSolveDefaults.maxIterations;
@@ -92,7 +92,7 @@ int runRender(const RenderOptions& options) {
         throw RadiantError({"", "--link-tolerance"}, "must be > 0, got " + std::to_string(options.linkTolerance));
     if (!(options.tolerance > 0))
         throw RadiantError({"", "--tolerance"}, "must be > 0, got " + std::to_string(options.tolerance));
-    const SolverMethod method = parseMethod(options.method);
+    if (!options.method.empty()) (void)parseMethod(options.method);  // a bad name fails before the load
     // The GL context first, so a missing one fails before the solve rather than after.
     const OffscreenContext context("radiant render");
 
@@ -101,6 +101,7 @@ int runRender(const RenderOptions& options) {
     const Scene& scene = loaded.scene;
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
+    const SolverMethod method = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes).method;
     const PatchMesh mesh = meshScene(scene, meshing);
     // One view for the picture and for importance's refinement: what is drawn is what was refined.
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
@@ -161,9 +162,7 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_option("--png", options->png, "PNG file to write")->required();
     sub->add_option("--width", options->width, "image width in pixels")->capture_default_str();
     sub->add_option("--height", options->height, "image height in pixels")->capture_default_str();
-    sub->add_option("--method", options->method,
-                    methodNameList())
-        ->capture_default_str();
+    sub->add_option("--method", options->method, methodOptionHelp());
     sub->add_option("--max-patch-area", options->maxPatchArea, "largest patch in m^2")->capture_default_str();
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "solve until this residual")->capture_default_str();

@@ -28,7 +28,7 @@ namespace {
 
 struct SolveOptions {
     std::string scene;
-    std::string method{methodName(kSolveDefaults.method)};
+    std::string method;  ///< empty: chosen by the scene's size (DefaultMethod.h)
     double maxPatchArea = kSolveDefaults.maxPatchArea;
     double tolerance = kSolveDefaults.tolerance;
     std::size_t maxIterations = kSolveDefaults.maxIterations;
@@ -82,12 +82,14 @@ int runSolve(const SolveOptions& options) {
     checkPositive(options.maxPatchArea, "--max-patch-area");
     checkPositive(options.tolerance, "--tolerance");
     checkPositive(options.linkTolerance, "--link-tolerance");
-    const SolverMethod method = parseMethod(options.method);
+    if (!options.method.empty()) (void)parseMethod(options.method);  // a bad name fails before the load
 
     const auto meshStart = std::chrono::steady_clock::now();
     const Scene scene = loadSceneArgument(options.scene);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
+    const MethodChoice choice = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes);
+    const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
     const double meshSeconds = secondsSince(meshStart);
 
@@ -144,6 +146,7 @@ int runSolve(const SolveOptions& options) {
     const nlohmann::ordered_json report = {
         {"scene", scene.name},
         {"method", std::string(methodName(method))},
+        {"method_reason", choice.reason.empty() ? nlohmann::ordered_json("given by --method") : nlohmann::ordered_json(choice.reason)},
         {"patches", mesh.size()},
         {"iterations", stats.iteration},
         {"residual", stats.residual},
@@ -187,8 +190,7 @@ Subcommand addSolveCommand(CLI::App& root) {
     auto options = std::make_shared<SolveOptions>();
     CLI::App* sub = root.add_subcommand("solve", "Solve a scene's radiosity without a window; write JSON and CSV");
     sub->add_option("scene", options->scene, "glTF file or built-in scene name")->required();
-    sub->add_option("--method", options->method, methodNameList())
-        ->capture_default_str();
+    sub->add_option("--method", options->method, methodOptionHelp());
     sub->add_option("--max-patch-area", options->maxPatchArea, "Largest patch, m^2")->capture_default_str();
     sub->add_option("--tolerance", options->tolerance, "Stop at this residual (fraction of emitted power)")
         ->capture_default_str();

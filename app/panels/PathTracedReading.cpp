@@ -5,6 +5,7 @@
 #include <utility>
 
 #include "app/solver/ThreadPriority.h"
+#include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/reference/PathTracer.h"
 #include "radiometry/reference/ReferencePoint.h"
@@ -44,6 +45,13 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
                 });
                 if (done || stopToken.stop_requested()) break;
             }
+        } catch (const RadiantError& e) {
+            // Its element names the command line's --point or --normal; the detail already says
+            // "the point (...)" or "the normal (...)", which is what the lab's probe is.
+            publish([&](State& state) {
+                state.error = e.where().file.empty() ? e.detail() : e.where().file + ": " + e.detail();
+                state.refining = false;
+            });
         } catch (const std::exception& e) {
             publish([&](State& state) {
                 state.error = e.what();

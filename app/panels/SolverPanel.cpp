@@ -45,6 +45,11 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
                 live_.send(command::SetMethod{method.method});
         ImGui::EndCombo();
     }
+    if (!snapshot.methodReason.empty()) {  // chosen by the scene's size until the user picks one
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Default for this mesh: %s", snapshot.methodReason.c_str());
+        ImGui::PopStyleColor();
+    }
 
     const float buttonWidth = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
     if (ImGui::Button(snapshot.running ? "Pause" : "Run", {buttonWidth, 0}))

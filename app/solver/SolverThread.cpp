@@ -10,6 +10,8 @@
 
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/solver/DefaultMethod.h"
+#include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -37,6 +39,10 @@ struct SolverThread::State {
     std::shared_ptr<const Scene> solverScene;
     std::shared_ptr<const PatchMesh> solverMesh;
     SolverMethod method = kSolveDefaults.method;
+    /// The user picked `method` (SetMethod) for this scene; otherwise each new mesh chooses it by its
+    /// size (DefaultMethod.h) and `methodReason` says why.
+    bool methodPicked = false;
+    std::string methodReason;
     std::optional<View> view;  ///< the lab's camera for importance; none: the scene's home view
     bool running = false;
     std::size_t pendingSteps = 0;
@@ -65,6 +71,8 @@ namespace {
 // A shooting solver may take thousands of steps a second; the display needs at most one
 // snapshot per frame, and each snapshot copies the radiosity (the history only in part).
 constexpr auto kPublishInterval = std::chrono::milliseconds(12);
+/// The lab's words for coarser meshing in the form-factor budget's refusal (ScenePanel's slider).
+constexpr std::string_view kLabCoarserMeshing = "a larger patch area (the Scene panel's meshing slider)";
 
 std::vector<Rgb> emittedRadiosity(const Scene& scene, const PatchMesh& mesh) {
     std::vector<Rgb> b(mesh.size());
@@ -220,6 +228,12 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
             if (state.running && stats.residual < state.tolerance) state.running = false;
             const bool settled = !state.running && state.pendingSteps == 0;
             if (settled || std::chrono::steady_clock::now() - state.lastPublish >= kPublishInterval) publish(state);
+        } catch (const FormFactorBudgetError& e) {
+            // The lab's own control for coarser meshing, not the command line's flag.
+            state.error = e.where().str() + ": " + e.message(kLabCoarserMeshing);
+            state.running = false;
+            state.pendingSteps = 0;
+            publish(state);
         } catch (const Cancelled&) {
             // A newer command made the work pointless; it is next in the queue.
             state.solver.reset();
@@ -281,6 +295,8 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     ensureSolver(state);
                 }
             } else if constexpr (std::is_same_v<C, command::SetMethod>) {
+                state.methodPicked = true;
+                state.methodReason.clear();
                 if (c.method != state.method || !state.solver) {
                     state.method = c.method;
                     state.solver.reset();
@@ -332,7 +348,13 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 std::shared_ptr<const PatchMesh> mesh;
                 try {
                     mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
-                } catch (const Cancelled&) {
+                } catch (const FormFactorBudgetError& e) {
+            // The lab's own control for coarser meshing, not the command line's flag.
+            state.error = e.where().str() + ": " + e.message(kLabCoarserMeshing);
+            state.running = false;
+            state.pendingSteps = 0;
+            publish(state);
+        } catch (const Cancelled&) {
                     // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
                     // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.
                     state.scene = std::move(scene);
@@ -349,6 +371,17 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
                 ++state.meshGeneration;
+                // A method picked for another scene stays unless its matrix cannot hold this one:
+                // opening a scene never ends in a refusal (re-meshing finer may, naming the slider).
+                const bool pickDoesNotFit = std::is_same_v<C, command::LoadScene> &&
+                                            methodInfo(state.method).traits.formFactorMatrix &&
+                                            formFactorMatrixPeakBytes(state.mesh->size()) > options_.matrixBudgetBytes;
+                if (!state.methodPicked || pickDoesNotFit) {
+                    state.methodPicked = false;
+                    MethodChoice choice = chooseDefaultMethod(state.mesh->size(), options_.matrixBudgetBytes);
+                    state.method = choice.method;
+                    state.methodReason = std::move(choice.reason);
+                }
                 state.solver.reset();
                 state.running = false;
                 state.pendingSteps = 0;
@@ -433,6 +466,7 @@ void SolverThread::publish(State& state) {
             s->radiosity.clear();  // "no solution yet" to the display
     }
     s->method = state.method;
+    s->methodReason = state.methodReason;
     if (state.solver) s->stats = state.solver->lastStats();
     s->history = state.history.steps().snapshot();
     s->convergence = state.history.snapshot();

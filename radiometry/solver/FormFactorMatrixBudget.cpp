@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "radiometry/common/Error.h"
@@ -25,6 +26,11 @@ std::string gigabytes(double bytes) {
     return text;
 }
 
+std::string refusal(std::size_t patches, double neededBytes, double budgetBytes, std::string_view coarserMeshing) {
+    return "a form-factor matrix for " + std::to_string(patches) + " patches needs up to " + gigabytes(neededBytes) +
+           "; the budget is " + gigabytes(budgetBytes) + ": use progressive or hierarchical, or " + std::string(coarserMeshing);
+}
+
 } // namespace
 
 double formFactorMatrixPeakBytes(std::size_t patches) {
@@ -32,13 +38,18 @@ double formFactorMatrixPeakBytes(std::size_t patches) {
     return kBytesPerPair * n * (n - 1) / 2 + kBytesPerPatch * n;
 }
 
+FormFactorBudgetError::FormFactorBudgetError(std::size_t patches, double neededBytes, double budgetBytes)
+    : BudgetError({"", "form-factor matrix"}, refusal(patches, neededBytes, budgetBytes, kCommandLineCoarserMeshing)),
+      patches_(patches), neededBytes_(neededBytes), budgetBytes_(budgetBytes) {}
+
+std::string FormFactorBudgetError::message(std::string_view coarserMeshing) const {
+    return refusal(patches_, neededBytes_, budgetBytes_, coarserMeshing);
+}
+
 void checkFormFactorMatrixBudget(std::size_t patches, double budgetBytes) {
     const double needed = formFactorMatrixPeakBytes(patches);
     if (needed <= budgetBytes) return;
-    throw BudgetError({"", "form-factor matrix"},
-                      "a form-factor matrix for " + std::to_string(patches) + " patches needs up to " + gigabytes(needed) +
-                          "; the budget is " + gigabytes(budgetBytes) +
-                          ": use progressive or hierarchical, or a larger --max-patch-area");
+    throw FormFactorBudgetError(patches, needed, budgetBytes);
 }
 
 } // namespace radiant
