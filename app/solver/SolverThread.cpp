@@ -10,6 +10,7 @@
 
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -29,6 +30,10 @@ std::string_view activityName(SolverActivity activity) {
 /// Everything the worker owns. Only the worker thread touches it.
 struct SolverThread::State {
     std::shared_ptr<const Scene> scene;
+    /// The one ray caster of `scene`'s geometry, built when LoadScene takes the scene and shared by
+    /// the solvers, the snapshots and the panels; materials edits and re-meshing keep it (neither
+    /// changes a face).
+    std::shared_ptr<const RayCaster> rays;
     MeshingOptions meshing;
     std::shared_ptr<const PatchMesh> mesh;
     std::unique_ptr<Solver> solver;
@@ -321,13 +326,16 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.history.materialsRestored(state.method);
             } else if constexpr (std::is_same_v<C, command::Remesh> || std::is_same_v<C, command::LoadScene>) {
                 std::shared_ptr<const Scene> scene = state.scene;
+                std::shared_ptr<const RayCaster> rays = state.rays;
                 if constexpr (std::is_same_v<C, command::LoadScene>) {
                     scene = c.scene;
                     state.loadedScene = c.scene;
                     state.view.reset();  // a camera of the old scene
+                    rays.reset();
                 }
                 if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
                 activity_.store(SolverActivity::Meshing);
+                if (!rays) rays = std::make_shared<const RayCaster>(*scene);
                 progress_.cancelRequested.store(false);
                 std::shared_ptr<const PatchMesh> mesh;
                 try {
@@ -336,6 +344,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
                     // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.
                     state.scene = std::move(scene);
+                    state.rays = std::move(rays);
                     state.mesh.reset();
                     state.solver.reset();
                     ++state.meshGeneration;
@@ -346,6 +355,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     throw;
                 }
                 state.scene = std::move(scene);
+                state.rays = std::move(rays);
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
                 ++state.meshGeneration;
@@ -373,6 +383,7 @@ void SolverThread::ensureSolver(State& state) {
     state.linksStale = true;
     SolverOptions options = options_;
     if (state.view) options.view = state.view;
+    options.rays = state.rays;
     state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
     activity_.store(SolverActivity::Idle);
 }
@@ -414,6 +425,7 @@ void SolverThread::publish(State& state) {
     s->meshGeneration = state.meshGeneration;
     s->scene = state.scene;
     s->mesh = state.mesh;
+    s->rays = state.rays;
     if (state.solver)
         s->radiosity = state.solver->solution();
     else if (state.scene && state.mesh)
