@@ -42,10 +42,11 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
         surfaceExitance_.push_back(scene.materials[surface.material].exitance.value());
     }
     visibilityRays_ = std::min(options.formFactors.visibilityRays, kLinkVisibilityRays);
-    rays_ = options.rays;
-    if (!rays_ && (visibilityRays_ > 0 || !scene.lights.empty())) rays_ = std::make_shared<const RayCaster>(scene);
-    if (visibilityRays_ > 0) caster_ = rays_;
-    if (!scene.lights.empty()) lighting_ = std::make_unique<DirectLighting>(scene, rays_.get());
+    sceneRays_ = options.rays;
+    if (!sceneRays_ && (visibilityRays_ > 0 || !scene.lights.empty()))
+        sceneRays_ = std::make_shared<const RayCaster>(scene);
+    if (visibilityRays_ > 0) caster_ = sceneRays_;
+    if (!scene.lights.empty()) lighting_ = std::make_unique<DirectLighting>(scene, sceneRays_.get());
 
     patches_.reserve(mesh.patches.size());
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
