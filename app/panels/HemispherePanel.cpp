@@ -37,12 +37,13 @@ double upAzimuth(const render::HemicubeFrame& frame) {
 
 } // namespace
 
-/// The exact route's machinery, rebuilt when the mesh changes.
+/// The exact route's machinery, rebuilt when the mesh changes; it casts through the scene's one ray
+/// caster, the snapshot's.
 struct HemispherePanel::Exact {
     std::uint64_t meshGeneration = 0;
     std::shared_ptr<const Scene> scene;
     std::shared_ptr<const PatchMesh> mesh;
-    std::unique_ptr<RayCaster> rays;
+    std::shared_ptr<const RayCaster> rays;  ///< kept alive for probe, which holds a plain pointer
     std::unique_ptr<Probe> probe;
 };
 
@@ -183,7 +184,7 @@ void HemispherePanel::remeasure() {
         exact_->meshGeneration = snapshot.meshGeneration;
         exact_->scene = snapshot.scene;
         exact_->mesh = snapshot.mesh;
-        exact_->rays = std::make_unique<RayCaster>(*exact_->scene);
+        exact_->rays = snapshot.rays;
         exact_->probe = std::make_unique<Probe>(*exact_->scene, *exact_->mesh, exact_->rays.get());
     }
     const HemicubePoint& point = *session_->point();

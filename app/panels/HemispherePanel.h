@@ -18,10 +18,6 @@
 #include "render/hemicube/ImageTexture.h"
 #include "render/hemisphere/HemisphereOverlay.h"
 
-namespace radiant {
-class RayCaster;
-}
-
 namespace radiant::app {
 
 class HemispherePanel final : public Panel {

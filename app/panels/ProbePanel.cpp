@@ -16,16 +16,6 @@
 
 namespace radiant::app {
 
-/// The ray caster of one scene's geometry, with the scene it references kept alive. Materials edits
-/// publish new Scene objects with the same geometry, so one picker serves a whole mesh generation.
-struct ProbePanel::Picker {
-    explicit Picker(std::shared_ptr<const Scene> s, std::uint64_t generation)
-        : scene(std::move(s)), rays(*scene), meshGeneration(generation) {}
-    std::shared_ptr<const Scene> scene;
-    RayCaster rays;
-    std::uint64_t meshGeneration;
-};
-
 namespace {
 
 void row(const char* label, const char* unit, const Rgb& v) {
@@ -76,12 +66,10 @@ ProbePanel::~ProbePanel() {
 
 bool ProbePanel::pick(const glm::dvec3& origin, const glm::dvec3& direction) {
     const std::shared_ptr<const Snapshot> snapshot = live_.current;
-    if (!snapshot->scene || !snapshot->mesh) return false;
-    if (!picker_ || picker_->meshGeneration != snapshot->meshGeneration)
-        picker_ = std::make_shared<const Picker>(snapshot->scene, snapshot->meshGeneration);
+    if (!snapshot->scene || !snapshot->mesh || !snapshot->rays) return false;
     // The view draws faces from their fronts only (a closed room's near walls are open): a click
     // means the first face it shows, whose front faces the viewer.
-    const std::optional<RayHit> hit = picker_->rays.intersectFront(origin, direction);
+    const std::optional<RayHit> hit = snapshot->rays->intersectFront(origin, direction);
     if (!hit) return false;
     pick_ = ProbePick{hit->point, hit->normal, hit->surface, hit->face, snapshot->meshGeneration};
     reading_.reset();
@@ -134,31 +122,30 @@ bool ProbePanel::busy() const {
 }
 
 void ProbePanel::followPathTraced(const std::shared_ptr<const Snapshot>& snapshot) {
-    if (!pick_ || !snapshot->scene || !picker_ || picker_->meshGeneration != snapshot->meshGeneration) return;
+    if (!pick_ || !snapshot->scene || !snapshot->rays || pick_->meshGeneration != snapshot->meshGeneration) return;
     const Scene* running = pathTraced_.scene();
     if (pathTracedCurrent_ && running && (running == snapshot->scene.get() || sameMaterials(*running, *snapshot->scene)))
         return;
-    // The worker keeps the picker (and so its rays) alive through an aliasing pointer.
-    pathTraced_.start(snapshot->scene, std::shared_ptr<const RayCaster>(picker_, &picker_->rays), pick_->point,
-                      pick_->normal);
+    // The scene's one ray caster (the solver thread's), which the worker keeps alive.
+    pathTraced_.start(snapshot->scene, snapshot->rays, pick_->point, pick_->normal);
     pathTracedCurrent_ = true;
 }
 
 void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
     std::shared_ptr<const Snapshot> snapshot = live_.current;
-    if (!snapshot->scene || !snapshot->mesh || !picker_ || picker_->meshGeneration != snapshot->meshGeneration)
+    if (!snapshot->scene || !snapshot->mesh || !snapshot->rays || !pick_ || pick_->meshGeneration != snapshot->meshGeneration)
         return;
     dirty_ = false;
     lastStart_ = now;
     // The gather casts rays to every patch the point sees: tens of milliseconds on a fine mesh, so
     // it runs on a worker that holds the snapshot (scene, mesh, radiosity) alive while it reads.
-    job_ = std::async(std::launch::async, [snapshot, picker = picker_, at = *pick_, target = target_] {
+    job_ = std::async(std::launch::async, [snapshot, at = *pick_, target = target_] {
         yieldToTheDisplay();  // a fresh thread each time: background work, as the solver's
         Measured measured;
         measured.generation = snapshot->generation;
         const auto start = std::chrono::steady_clock::now();
         try {
-            const Probe probe(*snapshot->scene, *snapshot->mesh, &picker->rays);
+            const Probe probe(*snapshot->scene, *snapshot->mesh, snapshot->rays.get());
             measured.reading = probe.measure(at.point, at.normal, snapshot->radiosity, target);
         } catch (const std::exception& e) {
             measured.error = e.what();

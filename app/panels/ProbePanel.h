@@ -20,10 +20,6 @@
 #include "radiometry/probe/Probe.h"
 #include "render/DisplaySettings.h"
 
-namespace radiant {
-class RayCaster;
-}
-
 namespace radiant::app {
 
 /// A point picked on the scene: a ray hit, kept while the mesh it was picked on is shown.
@@ -70,7 +66,6 @@ private:
         std::uint64_t generation = 0;
         double seconds = 0;
     };
-    struct Picker;
     void startMeasuring(std::chrono::steady_clock::time_point now);
     void drawReadings(const Scene& scene, const ProbeReading& reading);
     void drawTarget(const Scene& scene);
@@ -80,7 +75,6 @@ private:
     void followPathTraced(const std::shared_ptr<const Snapshot>& snapshot);
 
     LiveSolve& live_;
-    std::shared_ptr<const Picker> picker_;  ///< ray caster of the shown scene's geometry
     std::optional<ProbePick> pick_;
     std::optional<std::size_t> target_;
     std::uint64_t targetMesh_ = 0;  ///< mesh generation target_ was chosen for
@@ -91,7 +85,7 @@ private:
     bool dirty_ = false;  ///< the pick or target changed since the last measurement started
     std::future<Measured> job_;
     std::chrono::steady_clock::time_point lastStart_{};
-    PathTracedReading pathTraced_;  ///< last: its worker reads picker_'s rays
+    PathTracedReading pathTraced_;  ///< last: its worker reads the snapshot's rays
     bool pathTracedCurrent_ = false;  ///< pathTraced_ runs at pick_
     const render::DisplaySettings* display_ = nullptr;
     bool copied_ = false;  ///< "Copy as command" was pressed for this pick

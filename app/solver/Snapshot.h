@@ -16,6 +16,10 @@
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
+namespace radiant {
+class RayCaster;
+}
+
 namespace radiant::app {
 
 enum class SolverActivity {
@@ -32,6 +36,10 @@ struct Snapshot {
     std::uint64_t meshGeneration = 0;  ///< increases when the scene or its mesh changes
     std::shared_ptr<const Scene> scene;     ///< materials as currently set
     std::shared_ptr<const PatchMesh> mesh;  ///< patches the radiosity below is indexed by
+    /// The one ray caster of `scene`'s geometry (RayCaster.h: const queries, safe from any thread),
+    /// the same object from LoadScene until the next one: materials edits and re-meshing keep it.
+    /// Pickers, the probe and the path tracer share it; null with no scene.
+    std::shared_ptr<const RayCaster> rays;
     std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
     SolverMethod method = kSolveDefaults.method;
     /// Why `method` was chosen when the user has not picked one for this scene ("12,000 patches: a

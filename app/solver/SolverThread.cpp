@@ -10,6 +10,7 @@
 
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/HierarchicalSolver.h"
@@ -31,6 +32,10 @@ std::string_view activityName(SolverActivity activity) {
 /// Everything the worker owns. Only the worker thread touches it.
 struct SolverThread::State {
     std::shared_ptr<const Scene> scene;
+    /// The one ray caster of `scene`'s geometry, built when LoadScene takes the scene and shared by
+    /// the solvers, the snapshots and the panels; materials edits and re-meshing keep it (neither
+    /// changes a face).
+    std::shared_ptr<const RayCaster> rays;
     MeshingOptions meshing;
     std::shared_ptr<const PatchMesh> mesh;
     std::unique_ptr<Solver> solver;
@@ -337,13 +342,16 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.history.materialsRestored(state.method);
             } else if constexpr (std::is_same_v<C, command::Remesh> || std::is_same_v<C, command::LoadScene>) {
                 std::shared_ptr<const Scene> scene = state.scene;
+                std::shared_ptr<const RayCaster> rays = state.rays;
                 if constexpr (std::is_same_v<C, command::LoadScene>) {
                     scene = c.scene;
                     state.loadedScene = c.scene;
                     state.view.reset();  // a camera of the old scene
+                    rays.reset();
                 }
                 if (!scene) throw RadiantError({"", "re-mesh"}, "no scene is loaded");
                 activity_.store(SolverActivity::Meshing);
+                if (!rays) rays = std::make_shared<const RayCaster>(*scene);
                 progress_.cancelRequested.store(false);
                 std::shared_ptr<const PatchMesh> mesh;
                 try {
@@ -358,6 +366,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
                     // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.
                     state.scene = std::move(scene);
+                    state.rays = std::move(rays);
                     state.mesh.reset();
                     state.solver.reset();
                     ++state.meshGeneration;
@@ -368,6 +377,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     throw;
                 }
                 state.scene = std::move(scene);
+                state.rays = std::move(rays);
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
                 ++state.meshGeneration;
@@ -406,6 +416,7 @@ void SolverThread::ensureSolver(State& state) {
     state.linksStale = true;
     SolverOptions options = options_;
     if (state.view) options.view = state.view;
+    options.rays = state.rays;
     state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
     activity_.store(SolverActivity::Idle);
 }
@@ -447,6 +458,7 @@ void SolverThread::publish(State& state) {
     s->meshGeneration = state.meshGeneration;
     s->scene = state.scene;
     s->mesh = state.mesh;
+    s->rays = state.rays;
     if (state.solver)
         s->radiosity = state.solver->solution();
     else if (state.scene && state.mesh)

@@ -12,6 +12,7 @@
 #include "radiometry/geometry/RayCaster.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -38,6 +39,8 @@ constexpr double kRelativeSegmentEpsilon = 1e-5;
 // Points within this many scene extents of a plane lie on it (double rounding of points generated
 // on a face, far below float's 6e-8).
 constexpr double kPlaneTolerance = 1e-9;
+
+std::atomic<std::uint64_t> constructions{0};
 
 struct TriangleTable {
     std::vector<TriangleInfo> triangles;  ///< by Embree primID
@@ -125,6 +128,7 @@ void setRay(RTCRay& ray, const glm::dvec3& localOrigin, const glm::dvec3& unitDi
 } // namespace
 
 RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
+    constructions.fetch_add(1, std::memory_order_relaxed);
     Impl& impl = *impl_;
     impl.device = rtcNewDevice(nullptr);
     if (!impl.device)
@@ -202,6 +206,7 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
 }
 
 RayCaster::~RayCaster() = default;
+std::uint64_t RayCaster::constructed() { return constructions.load(std::memory_order_relaxed); }
 RayCaster::RayCaster(RayCaster&&) noexcept = default;
 RayCaster& RayCaster::operator=(RayCaster&&) noexcept = default;
 

@@ -1,6 +1,11 @@
 #pragma once
 // Ray casting against the scene's faces through Embree's BVH: visibility for form factors and the
-// probe, and picking in the window. Built once per scene; thread-safe for concurrent queries.
+// probe, and picking in the window. Built once per scene (the lab shares one per loaded scene through
+// its snapshots and solvers, SolverOptions::rays) and thread-safe for concurrent queries: every query
+// is const, the Embree scene is committed in the constructor and never changed after, and Embree
+// allows any number of threads to trace a committed scene; each query's state lives on its stack.
+// It holds geometry only (faces, normals, which surface is two-sided), never materials, so a
+// materials edit keeps it valid.
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -38,6 +43,10 @@ public:
     /// True when something blocks the open segment between a and b. The end points lie on surfaces;
     /// the segment is shortened by a relative epsilon at both ends so neither end's own face counts.
     [[nodiscard]] bool occluded(const glm::dvec3& a, const glm::dvec3& b) const;
+
+    /// Ray casters constructed in this process so far: a BVH build is the cost the lab shares, and
+    /// tests count them. Atomic; it only counts, nothing depends on it.
+    [[nodiscard]] static std::uint64_t constructed();
 
 private:
     [[nodiscard]] std::optional<RayHit> nearestHit(const glm::dvec3& origin, const glm::dvec3& direction,

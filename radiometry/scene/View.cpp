@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -80,7 +81,7 @@ View insideView(const glm::dvec3& lo, const glm::dvec3& hi) {
 
 } // namespace
 
-View homeView(const Scene& scene) {
+View homeView(const Scene& scene, const RayCaster* rays) {
     if (scene.name == "cornell-box") return cornellView();
     // A glTF camera is where the scene's author meant it to be seen from.
     if (!scene.cameras.empty() && scene.cameras.front().verticalFieldOfView > 0) {
@@ -99,9 +100,10 @@ View homeView(const Scene& scene) {
     // A closed scene (a room, a furnace) shows only the backs of its walls from outside, and two
     // plates facing each other mostly their backs: look from inside the bounds when that shows
     // more front faces (an object's inside shows none, so objects keep the outside view).
-    const RayCaster rays(scene);
+    std::optional<RayCaster> own;
+    if (!rays) rays = &own.emplace(scene);
     const View inside = insideView(lo, hi);
-    return frontHitShare(rays, inside) > frontHitShare(rays, outside) ? inside : outside;
+    return frontHitShare(*rays, inside) > frontHitShare(*rays, outside) ? inside : outside;
 }
 
 } // namespace radiant

@@ -8,6 +8,8 @@
 
 namespace radiant {
 
+class RayCaster;
+
 struct View {
     glm::dvec3 eye{0.0};
     glm::dvec3 target{0, 0, 1};
@@ -34,6 +36,7 @@ bool sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 /// sees more front faces (a closed room or furnace from outside shows only its walls' backs; two
 /// plates facing each other mostly theirs).
 /// Casts a few hundred rays.
-View homeView(const Scene& scene);
+/// `rays`: the scene's ray caster when the caller has one; null builds one when the rule needs it.
+View homeView(const Scene& scene, const RayCaster* rays = nullptr);
 
 } // namespace radiant

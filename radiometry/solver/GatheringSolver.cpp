@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include <glm/common.hpp>
@@ -73,11 +74,12 @@ Rgb GatheringSolver::residualPower() {
 std::shared_ptr<const FormFactorMatrix> computeFormFactorMatrix(const Scene& scene, const PatchMesh& mesh,
                                                                 const SolverOptions& options, Progress* progress) {
     checkFormFactorMatrixBudget(mesh.size(), options.matrixBudgetBytes);  // before any allocation
-    const RayCaster rays(scene);
+    std::optional<RayCaster> own;  // only when the caller shares none (SolverOptions::rays)
+    const RayCaster* rays = options.rays ? options.rays.get() : &own.emplace(scene);
     FormFactorOptions formFactors = options.formFactors;
     formFactors.seed = pairSeed(options.seed, options.formFactors.seed, 0);
     return std::make_shared<const FormFactorMatrix>(
-        FormFactorMatrix::compute(mesh, &rays, formFactors, options.matrixThreshold, progress));
+        FormFactorMatrix::compute(mesh, rays, formFactors, options.matrixThreshold, progress));
 }
 
 } // namespace radiant

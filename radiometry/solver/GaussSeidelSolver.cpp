@@ -61,7 +61,8 @@ std::unique_ptr<Solver> makeGaussSeidelSolver(const Scene& scene, const PatchMes
 
 std::unique_ptr<Solver> makeGaussSeidelSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                               Progress* progress) {
-    return makeGaussSeidelSolver(scene, mesh, computeFormFactorMatrix(scene, mesh, options, progress));
+    std::shared_ptr<const FormFactorMatrix> matrix = computeFormFactorMatrix(scene, mesh, options, progress);
+    return std::make_unique<GaussSeidelSolver>(PatchMaterials::from(scene, mesh, options.rays.get()), std::move(matrix));
 }
 
 } // namespace radiant

@@ -42,11 +42,11 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
         surfaceExitance_.push_back(scene.materials[surface.material].exitance.value());
     }
     visibilityRays_ = std::min(options.formFactors.visibilityRays, kLinkVisibilityRays);
-    if (visibilityRays_ > 0) caster_ = std::make_unique<RayCaster>(scene);
-    if (!scene.lights.empty()) {
-        if (!caster_) lightCaster_ = std::make_unique<RayCaster>(scene);
-        lighting_ = std::make_unique<DirectLighting>(scene, caster_ ? caster_.get() : lightCaster_.get());
-    }
+    sceneRays_ = options.rays;
+    if (!sceneRays_ && (visibilityRays_ > 0 || !scene.lights.empty()))
+        sceneRays_ = std::make_shared<const RayCaster>(scene);
+    if (visibilityRays_ > 0) caster_ = sceneRays_;
+    if (!scene.lights.empty()) lighting_ = std::make_unique<DirectLighting>(scene, sceneRays_.get());
 
     patches_.reserve(mesh.patches.size());
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {

@@ -100,7 +100,9 @@ protected:
     std::vector<double> importance_;
 
     [[nodiscard]] unsigned threads() const { return threads_; }
-    [[nodiscard]] const RayCaster* rayCaster() const { return caster_.get(); }
+    /// The scene's ray caster: the shared one given (SolverOptions::rays), else the one built for
+    /// visibility or the lights; null when none was given and neither needs one.
+    [[nodiscard]] const RayCaster* rayCaster() const { return sceneRays_.get(); }
     [[nodiscard]] std::span<const Rgb> surfaceReflectance() const { return surfaceReflectance_; }
     /// Sum over the roots of A (E + rho H), the larger band (W): the scale of the refinement threshold.
     [[nodiscard]] double emittedPower() const;
@@ -171,13 +173,13 @@ private:
     SolverOptions options_;
     HierarchicalRefinement refinement_;
     ElementTree tree_;
-    std::unique_ptr<RayCaster> caster_;
+    std::shared_ptr<const RayCaster> caster_;  ///< sceneRays_ when links test visibility, else null
     int visibilityRays_ = 0;
     std::vector<Link> links_;
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
     std::vector<Rgb> surfaceReflectance_;
     std::vector<Rgb> surfaceExitance_;
-    std::unique_ptr<RayCaster> lightCaster_;  ///< the lights' shadow rays when caster_ is not built
+    std::shared_ptr<const RayCaster> sceneRays_;  ///< see rayCaster()
     std::unique_ptr<DirectLighting> lighting_;  ///< null without lights
     std::vector<Rgb> elementDirect_;  ///< H per element, W/m^2 (empty without lights)
     std::vector<Rgb> patchDirect_;    ///< H per patch, for the gathered per-patch solution

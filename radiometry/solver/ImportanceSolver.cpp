@@ -20,7 +20,8 @@ namespace radiant {
 ImportanceSolver::ImportanceSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                    Progress* progress)
     : HierarchicalSolver(scene, mesh, options, progress), sceneArea_(scene.totalArea()) {
-    castEyeRays(scene, options.view ? *options.view : homeView(scene));  // homeView casts rays: only when needed
+    // homeView casts rays: only when needed, and through the scene's caster when there is one.
+    castEyeRays(scene, options.view ? *options.view : homeView(scene, rayCaster()));
     setImportanceToEmission();
     afterSolutionMapped();
 }

@@ -45,7 +45,8 @@ std::unique_ptr<Solver> makeJacobiSolver(const Scene& scene, const PatchMesh& me
 
 std::unique_ptr<Solver> makeJacobiSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                          Progress* progress) {
-    return makeJacobiSolver(scene, mesh, computeFormFactorMatrix(scene, mesh, options, progress));
+    std::shared_ptr<const FormFactorMatrix> matrix = computeFormFactorMatrix(scene, mesh, options, progress);
+    return std::make_unique<JacobiSolver>(PatchMaterials::from(scene, mesh, options.rays.get()), std::move(matrix));
 }
 
 } // namespace radiant

@@ -123,7 +123,7 @@ struct ShotGeometry {
     std::vector<double> patchRadius;    ///< the same for each patch
     ProgressiveShooters groups;
     std::vector<std::uint32_t> timesShot;  ///< per group: a fresh jitter for every shot
-    std::unique_ptr<RayCaster> rays;
+    std::shared_ptr<const RayCaster> rays;  ///< the caller's (SolverOptions::rays) or our own
     FormFactorOptions options;
 };
 
@@ -401,7 +401,7 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
         geometry->patchRadius.push_back(radius);
     }
     geometry->timesShot.assign(shooters.size(), 0);
-    geometry->rays = std::make_unique<RayCaster>(scene);
+    geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
     return [geometry](std::size_t shooter, std::span<const double> memberPower, double powerShare,

@@ -160,7 +160,7 @@ std::unique_ptr<ProgressiveSolver> makeProgressiveSolver(const Scene& scene, con
                                   : blockForShooterCount(mesh.size(), progressive.shooterCount);
     ProgressiveShooters shooters = blockShooters(mesh, block);
     GroupShotFormFactors formFactors = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
-    return std::make_unique<ProgressiveSolver>(PatchMaterials::from(scene, mesh), std::move(shooters),
+    return std::make_unique<ProgressiveSolver>(PatchMaterials::from(scene, mesh, options.rays.get()), std::move(shooters),
                                                std::move(formFactors));
 }
 

@@ -25,6 +25,7 @@
 namespace radiant {
 
 class HierarchicalSolver;
+class RayCaster;
 
 /// The method's command-line name (the table in SolverMethods.h): "gauss-seidel".
 std::string_view methodName(SolverMethod method);
@@ -56,6 +57,10 @@ struct SolverOptions {
     std::optional<View> view;
     /// Gathering: refuse (BudgetError, before allocating) a form-factor matrix that may need more bytes.
     double matrixBudgetBytes = 4e9;
+    /// The ray caster of the scene's geometry (RayCaster.h), shared by whoever holds it: the lab builds
+    /// one per loaded scene. Null: the solver builds its own (the command line, the tests). A given one
+    /// must have been built from a scene with the same surfaces and faces; materials do not matter.
+    std::shared_ptr<const RayCaster> rays;
 };
 
 class Solver {

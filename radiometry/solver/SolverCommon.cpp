@@ -1,6 +1,7 @@
 #include "radiometry/solver/SolverCommon.h"
 
 #include <algorithm>
+#include <optional>
 #include <string>
 
 #include "radiometry/common/Error.h"
@@ -26,7 +27,7 @@ std::string surfaceLabel(std::size_t surface) { return "surface " + std::to_stri
 
 } // namespace
 
-PatchMaterials PatchMaterials::from(const Scene& scene, const PatchMesh& mesh) {
+PatchMaterials PatchMaterials::from(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays) {
     if (mesh.surfaceFirstPatch.size() != scene.surfaces.size() + 1 || mesh.surfaceFirstPatch.back() != mesh.size())
         throw RadiantError({scene.name, "patch mesh"},
                            "the mesh has " + std::to_string(mesh.surfaceFirstPatch.size()) +
@@ -41,8 +42,9 @@ PatchMaterials PatchMaterials::from(const Scene& scene, const PatchMesh& mesh) {
     if (scene.lights.empty()) {
         materials.directIrradiance.assign(mesh.size(), Rgb(0.0));
     } else {
-        const RayCaster rays(scene);
-        materials.directIrradiance = meanDirectIrradiance(scene, mesh, &rays);
+        std::optional<RayCaster> own;
+        if (!rays) rays = &own.emplace(scene);
+        materials.directIrradiance = meanDirectIrradiance(scene, mesh, rays);
     }
     for (std::size_t i = 0; i < mesh.size(); ++i) materials.area[i] = mesh.patches[i].area;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {

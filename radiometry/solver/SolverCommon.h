@@ -11,6 +11,8 @@
 
 namespace radiant {
 
+class RayCaster;
+
 /// Per-patch copies of area and material, so a solver owns its inputs and one surface's material
 /// can change without touching the scene (several surfaces may share a scene material).
 struct PatchMaterials {
@@ -26,8 +28,9 @@ struct PatchMaterials {
     std::vector<std::uint32_t> surfaceFirstPatch;  ///< as PatchMesh::surfaceFirstPatch
 
     /// Throws RadiantError when a material is out of range or the mesh does not match the scene.
-    /// Casts the lights' shadow rays (a ray caster of its own) when the scene has lights.
-    static PatchMaterials from(const Scene& scene, const PatchMesh& mesh);
+    /// Casts the lights' shadow rays when the scene has lights: through `rays` (the scene's caster)
+    /// when given, else through a caster of its own.
+    static PatchMaterials from(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays = nullptr);
 
     [[nodiscard]] std::size_t size() const { return area.size(); }
     [[nodiscard]] std::size_t surfaceCount() const { return surfaceFirstPatch.size() - 1; }

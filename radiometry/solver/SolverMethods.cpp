@@ -5,6 +5,8 @@
 
 #include "radiometry/common/Check.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/solver/Solver.h"
 #include "radiometry/solver/SolverFactories.h"
 
 namespace radiant {
@@ -82,7 +84,12 @@ SolverMethod parseMethod(std::string_view name) {
 
 std::unique_ptr<Solver> makeSolver(SolverMethod method, const Scene& scene, const PatchMesh& mesh,
                                    const SolverOptions& options, Progress* progress) {
-    return methodInfo(method).factory(scene, mesh, options, progress);
+    // One BVH for all of the solver's parts (form factors, the lights' shadow rays, eye rays) when
+    // the caller has none to share; a factory called directly builds what it needs itself.
+    if (options.rays) return methodInfo(method).factory(scene, mesh, options, progress);
+    SolverOptions shared = options;
+    shared.rays = std::make_shared<const RayCaster>(scene);
+    return methodInfo(method).factory(scene, mesh, shared, progress);
 }
 
 } // namespace radiant
