@@ -61,7 +61,7 @@ void frameUntilConverged(Lab& lab) {
 
 TEST_SUITE("gl lab") {
 
-TEST_CASE("the false-colour legend is drawn in the 3D view's top-right corner at UI scale 1.5, and only in false colour") {
+TEST_CASE("the false-colour legend is drawn in the 3D view's top-right corner at UI scales 1.0 and 1.5, and only in false colour") {
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
     app::LabOptions options;
@@ -79,18 +79,22 @@ TEST_CASE("the false-colour legend is drawn in the 3D view's top-right corner at
 
     lab.display().colourMode = render::ColourMode::FalseColour;
     lab.display().isolines = true;
-    lab.frame();
-    const render::ImageRgb8 image = lab.frameAndCapture();
-    const std::optional<BarFound> bar = findColourBar(image, 100);
-    REQUIRE(bar.has_value());
-    INFO("bar at x " << bar->x << ", rows " << bar->top << " to " << bar->bottom);
-    // In the view's top-right corner (the sidebar is on the left), tall enough to read from afar.
-    CHECK(bar->x > image.width * 3 / 4);
-    CHECK(bar->top < image.height / 6);
-    CHECK(bar->bottom - bar->top >= image.height / 4);
-
-    if (const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR"))
-        render::writePng(image, std::filesystem::path(directory) / "legend-3d-view.png");
+    for (const float scale : {1.0f, 1.5f}) {
+        lab.display().uiScale = scale;
+        for (int i = 0; i < 3; ++i) lab.frame();  // the font atlas is rebuilt at the new scale
+        const render::ImageRgb8 image = lab.frameAndCapture();
+        const std::optional<BarFound> bar = findColourBar(image, 100);
+        INFO("UI scale " << scale);
+        REQUIRE(bar.has_value());
+        INFO("bar at x " << bar->x << ", rows " << bar->top << " to " << bar->bottom);
+        // In the view's top-right corner (the sidebar is on the left), tall enough to read from afar.
+        CHECK(bar->x > image.width * 3 / 4);
+        CHECK(bar->top < image.height / 6);
+        CHECK(bar->bottom - bar->top >= image.height / 4);
+        if (const char* directory = std::getenv("RADIANT_SCREENSHOT_DIR"))
+            render::writePng(image, std::filesystem::path(directory) /
+                                        (scale == 1.5f ? "legend-3d-view.png" : "legend-3d-view-scale-1.png"));
+    }
 }
 
 }
