@@ -31,6 +31,7 @@
 #include "app/solver/SolverThread.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
+#include "app/ui/LegendOverlay.h"
 #include "app/ui/Shortcuts.h"
 #include "app/ui/Sidebar.h"
 #include "app/ui/StatusBar.h"
@@ -316,6 +317,7 @@ struct Lab::State {
         followPick();
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
         drawLessonCaption(lessons, viewInUiUnits);
+        if (display.colourMode == render::ColourMode::FalseColour) drawLegendOverlay(patches->legend(), viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);

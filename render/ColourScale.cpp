@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 
 namespace radiant::render {
 
@@ -62,6 +63,33 @@ double ColourLegend::position(double valueW_m2) const {
     return std::clamp(t, 0.0, 1.0);
 }
 
+double ColourLegend::linearStepW_m2() const {
+    if (logScale) return 0;
+    return ticksW_m2.size() >= 2 ? ticksW_m2[1] - ticksW_m2[0] : maxW_m2 - minW_m2;
+}
+
+double ColourLegend::isolineCoordinate(double t) const {
+    if (!logScale) {
+        const double step = linearStepW_m2();
+        return (minW_m2 + t * (maxW_m2 - minW_m2)) / step;
+    }
+    const double lo = std::log10(minW_m2), hi = std::log10(maxW_m2);
+    const double exponent = lo + t * (hi - lo);
+    const double decade = std::floor(exponent);
+    const double mantissa = std::pow(10.0, exponent - decade);  // in [1, 10)
+    const double piece = mantissa < 2 ? mantissa - 1 : mantissa < 5 ? 1 + (mantissa - 2) / 3 : 2 + (mantissa - 5) / 5;
+    return 3 * decade + piece;
+}
+
+std::string formatLegendTick(double valueW_m2) {
+    char text[32];
+    if (valueW_m2 == 0) return "0";
+    const double magnitude = std::abs(valueW_m2);
+    if (magnitude >= 1e4 && magnitude < 1e7) std::snprintf(text, sizeof text, "%gk", valueW_m2 / 1e3);
+    else std::snprintf(text, sizeof text, "%g", valueW_m2);
+    return text;
+}
+
 namespace {
 
 /// The smallest of 1, 2, 5 x 10^k that is at least `value`.
@@ -80,10 +108,15 @@ ColourLegend makeLegend(double maxW_m2, bool logScale, int decades) {
     legend.maxW_m2 = maxW_m2 > 0 && std::isfinite(maxW_m2) ? maxW_m2 : 1.0;
     if (logScale) {
         legend.minW_m2 = legend.maxW_m2 * std::pow(10.0, -std::max(decades, 1));
-        // Every power of ten inside the range (both ends included when they land on one).
-        for (double p = std::pow(10.0, std::ceil(std::log10(legend.minW_m2) - 1e-9)); p <= legend.maxW_m2 * (1 + 1e-9);
-             p *= 10.0)
-            legend.ticksW_m2.push_back(p);
+        // 1, 2 and 5 of every decade inside the range (both ends included when they land on one):
+        // three decades of powers of ten alone left the isolines too far apart to read a value.
+        const int firstDecade = static_cast<int>(std::floor(std::log10(legend.minW_m2) + 1e-9));
+        const int lastDecade = static_cast<int>(std::floor(std::log10(legend.maxW_m2) + 1e-9));
+        for (int k = firstDecade; k <= lastDecade; ++k)
+            for (const double m : {1.0, 2.0, 5.0}) {
+                const double tick = m * std::pow(10.0, k);
+                if (tick >= legend.minW_m2 * (1 - 1e-9) && tick <= legend.maxW_m2 * (1 + 1e-9)) legend.ticksW_m2.push_back(tick);
+            }
     } else {
         legend.minW_m2 = 0;
         // Four to ten ticks at a 1-2-5 step.

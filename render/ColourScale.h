@@ -3,6 +3,7 @@
 // the shaders do: the ACES-fitted tone curve, sRGB encoding, the viridis colour map, and the
 // W/m^2 range false colour maps with its legend ticks. shaders/patch.frag.glsl mirrors these.
 #include <glm/vec3.hpp>
+#include <string>
 #include <vector>
 
 namespace radiant::render {
@@ -39,13 +40,28 @@ struct ColourLegend {
     double minW_m2 = 0;
     double maxW_m2 = 1;
     bool logScale = false;
-    std::vector<double> ticksW_m2;  ///< round values inside the range, for labels and isolines
+    /// Round values inside the range, for labels and isolines: linear, every step of 1, 2 or 5 x 10^k;
+    /// log, 1, 2 and 5 in every decade.
+    std::vector<double> ticksW_m2;
 
     /// Position of a value on the colour map, in [0, 1] (clamped).
     [[nodiscard]] double position(double valueW_m2) const;
+    /// A coordinate along the colour map that is an integer exactly at each tick and continuous in
+    /// between (shaders/patch.frag.glsl draws an isoline where it crosses an integer; it mirrors this).
+    /// Linear: value / step. Log: 3 per decade, piecewise linear in the value within 1-2, 2-5, 5-10.
+    [[nodiscard]] double isolineCoordinate(double position) const;
+    /// The linear tick step (the shader's isolineScale is range / step); 0 for a log legend.
+    [[nodiscard]] double linearStepW_m2() const;
 };
 
 /// A linear legend from 0 to maxW_m2, or a log legend over `decades` decades below it, with round ticks.
 ColourLegend makeLegend(double maxW_m2, bool logScale, int decades);
+
+/// What false colour shows and its unit, for every legend (3D view, render PNGs, Display panel).
+inline constexpr const char* kFalseColourQuantity = "radiosity, sum of R+G+B";
+inline constexpr const char* kFalseColourUnit = "W/m^2";
+
+/// A tick's label: short, exact for 1-2-5 values ("0", "0.02", "500", "2k", "1e-05").
+std::string formatLegendTick(double valueW_m2);
 
 } // namespace radiant::render

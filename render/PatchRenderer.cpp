@@ -283,16 +283,17 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
             p.set("atlasSize", glm::vec2(static_cast<float>(model_.grids().atlasWidth),
                                          static_cast<float>(model_.grids().atlasHeight)));
         }
-        // Isolines where the value crosses a tick: linear legends tick every `step` W/m^2 from the
-        // minimum, log legends at each power of ten.
+        // Isolines where the value crosses a tick (ColourLegend::isolineCoordinate, mirrored by the shader).
         if (range.logScale) {
             const double lo = std::log10(range.minW_m2), hi = std::log10(range.maxW_m2);
             p.set("isolineScale", static_cast<float>(hi - lo));
             p.set("isolineOffset", static_cast<float>(lo));
+            p.set("isolineLog", 1);
         } else {
-            const double step = range.ticksW_m2.size() >= 2 ? range.ticksW_m2[1] - range.ticksW_m2[0] : range.maxW_m2;
+            const double step = range.linearStepW_m2();
             p.set("isolineScale", static_cast<float>((range.maxW_m2 - range.minW_m2) / step));
             p.set("isolineOffset", static_cast<float>(range.minW_m2 / step));
+            p.set("isolineLog", 0);
         }
     };
     // Pushed back by their depth slope so overlays drawn at the same depth stay on top.

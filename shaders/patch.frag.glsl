@@ -15,18 +15,21 @@ uniform sampler2D vertexColours;
 uniform sampler2D patchColours;
 uniform sampler2D patchTints;
 uniform vec2 atlasSize;
-uniform float isolineScale;
-uniform float isolineOffset;
 #else
 in vec3 displayColour;
 in float legendT;
-in float isolineU;
 in vec4 tint;
 in vec3 edge;
 flat in int outlined;
 #endif
 
 uniform int wireframe;
+// Isolines: u = colour-map position * scale + offset; linear legends tick at integer u, log legends
+// (isolineLog = 1, u = log10 of the value) at 1, 2 and 5 of each decade. ColourLegend::isolineCoordinate
+// (render/ColourScale.cpp) is the same function.
+uniform float isolineScale;
+uniform float isolineOffset;
+uniform int isolineLog;
 
 out vec4 fragColour;
 
@@ -46,6 +49,18 @@ vec3 viridis(float t) {
     c = mix(c, vec3(253, 231, 37), clamp(s - 7.0, 0.0, 1.0));
     return c / 255.0;
 }
+
+#ifdef ISOLINES
+// Integer exactly at each legend tick, continuous in between.
+float isolineCoordinate(float t) {
+    float u = t * isolineScale + isolineOffset;
+    if (isolineLog == 0) return u;
+    float decade = floor(u);
+    float m = pow(10.0, u - decade);
+    float piece = m < 2.0 ? m - 1.0 : (m < 5.0 ? 1.0 + (m - 2.0) / 3.0 : 2.0 + (m - 5.0) / 5.0);
+    return 3.0 * decade + piece;
+}
+#endif
 #endif
 
 void main() {
@@ -59,7 +74,6 @@ void main() {
 #endif
     vec3 displayColour = sampled.rgb * shade;
     float legendT = sampled.a;
-    float isolineU = legendT * isolineScale + isolineOffset;
 #ifdef TINTS
     vec4 tintAndOutline = texelFetch(patchTints, cell, 0);
 #else
@@ -73,6 +87,7 @@ void main() {
     vec3 colour = viridis(legendT);
 #ifdef ISOLINES
     // A line about one pixel wide where the coordinate crosses an integer (a legend tick).
+    float isolineU = isolineCoordinate(legendT);
     float linePixels = abs(fract(isolineU + 0.5) - 0.5) / max(fwidth(isolineU), 1e-6);
     colour = mix(colour, vec3(0.02), 0.75 * (1.0 - smoothstep(0.5, 1.5, linePixels)));
 #endif

@@ -47,12 +47,9 @@ uniform mat4 viewProjection;
 uniform int hasRadiosity;
 uniform vec3 eye;
 uniform vec3 keyDirection;   // unit: a key light fixed to the camera, for the base view only
-uniform float isolineScale;  // isoline coordinate = colour-map position * scale + offset
-uniform float isolineOffset;
 
 out vec3 displayColour;  // sRGB-encoded
 out float legendT;
-out float isolineU;
 out vec4 tint;
 out vec3 edge;
 flat out int outlined;
@@ -67,7 +64,6 @@ void main() {
         displayColour *= 0.45 + 0.35 * dot(n, toEye) + 0.2 * max(dot(n, keyDirection), 0.0);
     }
     legendT = colour.a;
-    isolineU = colour.a * isolineScale + isolineOffset;
     outlined = tintAndOutline.a >= 2.0 ? 1 : 0;
     tint = vec4(tintAndOutline.rgb, tintAndOutline.a - 2.0 * float(outlined));
     edge = edgeCoordinate;

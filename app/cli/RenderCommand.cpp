@@ -23,6 +23,7 @@
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
 #include "render/camera/HomeCamera.h"
+#include "render/display/LegendImage.h"
 
 namespace radiant::app {
 namespace {
@@ -137,8 +138,9 @@ int runRender(const RenderOptions& options) {
     settings.highlightShooter = false;
     renderer.setSettings(settings);
     renderer.prepare();
-    const render::ImageRgb8 image =
-        render::renderOffscreen(renderer, camera, options.width, options.height, kBackground);
+    render::ImageRgb8 image = render::renderOffscreen(renderer, camera, options.width, options.height, kBackground);
+    // A false-colour figure means nothing without its scale: the legend goes into the picture.
+    if (options.falseColour) render::paintLegend(image, renderer.legend());
     render::writePng(image, options.png);
     std::printf("%s: %zu patches, %s, %zu iterations, residual %.3g; wrote %s (%d x %d)\n", options.scene.c_str(),
                 mesh.size(), std::string(methodName(method)).c_str(), stats.iteration, stats.residual,
@@ -169,7 +171,7 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_option("--max-iterations", options->maxIterations, "or this many steps")->capture_default_str();
     addViewOptions(*sub, options->view);
     sub->add_flag("--false-colour,--false-color", options->falseColour,
-                  "total radiosity in W/m^2 through viridis instead of the tone-mapped picture");
+                  "total radiosity in W/m^2 through viridis instead of the tone-mapped picture, with its legend");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");
     sub->add_flag("--flat", options->flat, "each patch its own radiosity (no interpolation)");
     sub->add_flag("--wireframe", options->wireframe, "draw the patch edges");

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <string>
 
 namespace radiant::app {
 namespace {
@@ -14,13 +15,6 @@ constexpr const char* kUnit = "W/m\xC2\xB2";  // UTF-8 superscript two: the UI f
 ImU32 colourU32(const glm::dvec3& srgb) {
     return ImGui::GetColorU32(ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y),
                                      static_cast<float>(srgb.z), 1.0f));
-}
-
-/// "0.25", "12", "1.5k": short enough to sit under a tick.
-void formatTick(char* out, std::size_t size, double value) {
-    if (value == 0) std::snprintf(out, size, "0");
-    else if (value >= 1e4) std::snprintf(out, size, "%gk", value / 1e3);
-    else std::snprintf(out, size, "%g", value);
 }
 
 void help(const char* text) {
@@ -158,12 +152,11 @@ void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {
     for (const double tick : legend.ticksW_m2) {
         const float x = barLo.x + width * static_cast<float>(legend.position(tick));
         draw->AddLine(ImVec2(x, barHi.y), ImVec2(x, barHi.y + font * 0.3f), text);
-        char label[32];
-        formatTick(label, sizeof label, tick);
-        const float labelWidth = ImGui::CalcTextSize(label).x;
+        const std::string label = render::formatLegendTick(tick);
+        const float labelWidth = ImGui::CalcTextSize(label.c_str()).x;
         const float left = x - labelWidth / 2;
         if (left < lastLabelEnd + font * 0.3f) continue;  // crowded: keep the tick, drop its number
-        draw->AddText(ImVec2(left, barHi.y + font * 0.35f), text, label);
+        draw->AddText(ImVec2(left, barHi.y + font * 0.35f), text, label.c_str());
         lastLabelEnd = left + labelWidth;
     }
     ImGui::Dummy(ImVec2(width + 2 * margin, barHeight + font * 1.6f));

@@ -19,18 +19,17 @@ std::uint8_t toSrgbByte(float linear) {
     return static_cast<std::uint8_t>(std::lround(s * 255.0f));
 }
 
-/// A perceptually ordered ramp (dark blue -> teal -> yellow) for the heat map, in linear RGB.
-glm::vec3 heat(float t) {
-    t = std::clamp(t, 0.0f, 1.0f);
-    const glm::vec3 low{0.02f, 0.01f, 0.15f}, mid{0.02f, 0.35f, 0.35f}, high{1.0f, 0.85f, 0.05f};
-    return t < 0.5f ? glm::mix(low, mid, t * 2.0f) : glm::mix(mid, high, t * 2.0f - 1.0f);
-}
-
 const glm::vec3 kSky{0.012f, 0.014f, 0.02f};
 const glm::vec3 kGrid{0.55f, 0.55f, 0.6f};
 const glm::vec3 kOutline{1.0f, 0.8f, 0.0f};
 
 } // namespace
+
+glm::vec3 deltaFormFactorHeat(float t) {
+    t = std::clamp(t, 0.0f, 1.0f);
+    const glm::vec3 low{0.02f, 0.01f, 0.15f}, mid{0.02f, 0.35f, 0.35f}, high{1.0f, 0.85f, 0.05f};
+    return t < 0.5f ? glm::mix(low, mid, t * 2.0f) : glm::mix(mid, high, t * 2.0f - 1.0f);
+}
 
 std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const HemicubeCapture& capture,
                                           const PatchMesh& mesh,
@@ -113,7 +112,7 @@ std::vector<std::uint8_t> hemisphereImage(const HemisphereViewMap& map, const He
                     colour = glm::vec3(0.0f);
                 break;
             case HemisphereColouring::DeltaFormFactor:
-                colour = heat(static_cast<float>(layout.deltaFormFactors()[static_cast<std::size_t>(atlas)] /
+                colour = deltaFormFactorHeat(static_cast<float>(layout.deltaFormFactors()[static_cast<std::size_t>(atlas)] /
                                                  maxDeltaFormFactor));
                 break;
             }

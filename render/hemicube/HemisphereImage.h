@@ -31,6 +31,10 @@ struct HemisphereImageOptions {
     std::uint8_t openSkyAlpha = 255;           ///< alpha where the point sees nothing (the 3D dome: see-through)
 };
 
+/// The delta form factor heat map's ramp (dark blue -> teal -> yellow), linear RGB, at t = dF / (dA / pi)
+/// in [0, 1] (clamped): the image and the Hemisphere panel's colour scale share it.
+glm::vec3 deltaFormFactorHeat(float t);
+
 /// RGBA8, map.size() squared pixels, top row first; outside the disk transparent, open sky openSkyAlpha.
 /// `surfaceColours` (linear RGB per surface) is used for Surfaces; `radiosity` (W/m^2 per patch) for Radiance.
 /// `map` must have been made for capture.layout.
