@@ -193,7 +193,7 @@ TEST_CASE("the loader reads point, spot and directional lights in SI units from 
     CHECK(sun.lights[0].normalIrradiance.value().x == relativeTo(1000.0 / 179.0, 1e-12));
 }
 
-TEST_CASE("a bad light is refused in one line naming it; one that gives no light or is placed nowhere is a warning") {
+TEST_CASE("a bad light is refused in one line naming it, and one that gives no light or is placed nowhere is a warning") {
     const auto light = [](nlohmann::json& doc) -> nlohmann::json& { return doc["extensions"]["KHR_lights_punctual"]["lights"][0]; };
     const auto refused = [](const std::string& message, const std::string& part) {
         CAPTURE(message);
