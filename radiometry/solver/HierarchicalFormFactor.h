@@ -23,7 +23,10 @@ namespace radiant::hierarchical {
 /// polygon's back or nothing of it lies above x's tangent plane.
 inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& polygon) {
     if (glm::dot(polygon.normal, x - polygon.centroid) <= 0) return 0;  // behind the emitting side
-    std::array<glm::dvec3, 5> clipped;  // a convex polygon clipped by a plane gains at most one corner
+    // A convex polygon clipped by a plane gains at most one corner, but a point in (or a hair off) the
+    // polygon's own plane sees its corners' heights as round-off of either sign (a double-sided face's
+    // twin, a curved surface's neighbour): + - + - makes two corners per edge. Room for all of them.
+    std::array<glm::dvec3, 8> clipped;
     int count = 0;
     const int corners = polygon.count;
     std::array<double, 4> height{};
