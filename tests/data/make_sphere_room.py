@@ -5,7 +5,7 @@ standing in a closed 2 m cube room (walls facing inward, reflectance 0.5) lit by
 ceiling lamp 1 cm below the ceiling (50 W/m^2, black). Materials are single-sided with exact SI
 values in extras.radiant, so Gauss-Seidel, hierarchical radiosity and the path tracer solve the same
 scene. Issue #20 item 6: hierarchical radiosity lost ~20% on such curved objects. Read by
-tests/unit/test_hierarchical_curved.cpp and the hierarchical accuracy bench.
+tests/unit/test_hierarchical_curved.cpp; app/bench/HierarchicalAccuracy.cpp builds the same scene in code.
     python3 tests/data/make_sphere_room.py
 """
 import base64
