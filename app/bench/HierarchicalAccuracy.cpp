@@ -1,9 +1,13 @@
 #include "app/bench/HierarchicalAccuracy.h"
 
+#include "app/bench/BenchTable.h"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numbers>
+#include <utility>
 
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/probe/Probe.h"
@@ -138,6 +142,112 @@ std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellB
     std::vector<double> worst;
     for (const Rgb& e : bandErrors(solver, box, reference)) worst.push_back(std::max({e.x, e.y, e.z}));
     return worst;
+}
+
+namespace {
+
+Face polygonFace(std::vector<glm::dvec3> corners) {
+    Face face;
+    face.vertices = std::move(corners);
+    face.updateGeometry();
+    return face;
+}
+
+Scene makeSphereRoom() {
+    Scene scene;
+    scene.name = "sphere room";
+    scene.materials = {{"grey walls", Rgb(0.5), ExitanceRgb{}},
+                       {"lamp", Rgb(0.0), ExitanceRgb(Rgb(50.0))},
+                       {"grey sphere", Rgb(0.5), ExitanceRgb{}}};
+    const double x0 = -1, x1 = 1, y0 = 0, y1 = 2, z0 = -1, z1 = 1;  // walls facing inward
+    scene.surfaces.push_back({"floor", 0, {polygonFace({{x0, y0, z0}, {x0, y0, z1}, {x1, y0, z1}, {x1, y0, z0}})}, "bench"});
+    scene.surfaces.push_back({"ceiling", 0, {polygonFace({{x0, y1, z0}, {x1, y1, z0}, {x1, y1, z1}, {x0, y1, z1}})}, "bench"});
+    scene.surfaces.push_back({"walls", 0,
+                              {polygonFace({{x0, y0, z0}, {x0, y1, z0}, {x0, y1, z1}, {x0, y0, z1}}),
+                               polygonFace({{x1, y0, z0}, {x1, y0, z1}, {x1, y1, z1}, {x1, y1, z0}}),
+                               polygonFace({{x0, y0, z0}, {x1, y0, z0}, {x1, y1, z0}, {x0, y1, z0}}),
+                               polygonFace({{x0, y0, z1}, {x0, y1, z1}, {x1, y1, z1}, {x1, y0, z1}})},
+                              "bench"});
+    const double s = 0.3, y = 1.99;  // facing down
+    scene.surfaces.push_back({"ceiling lamp", 1, {polygonFace({{-s, y, -s}, {s, y, -s}, {s, y, s}, {-s, y, s}})}, "bench"});
+    const glm::dvec3 centre(0, 0.7, 0);
+    const double radius = 0.5;
+    const int segments = 32, rings = 16;
+    const auto at = [&](int ring, int segment) {
+        const double polar = std::numbers::pi * ring / rings, azimuth = 2 * std::numbers::pi * segment / segments;
+        return centre + radius * glm::dvec3(std::sin(polar) * std::cos(azimuth), std::cos(polar),
+                                            -std::sin(polar) * std::sin(azimuth));
+    };
+    Surface sphere{"sphere", 2, {}, "bench"};
+    for (int ring = 0; ring < rings; ++ring)
+        for (int k = 0; k < segments; ++k) {
+            if (ring == 0)
+                sphere.faces.push_back(polygonFace({at(0, 0), at(1, k), at(1, k + 1)}));
+            else if (ring == rings - 1)
+                sphere.faces.push_back(polygonFace({at(rings, 0), at(rings - 1, k + 1), at(rings - 1, k)}));
+            else
+                sphere.faces.push_back(polygonFace({at(ring, k), at(ring + 1, k), at(ring + 1, k + 1), at(ring, k + 1)}));
+        }
+    scene.surfaces.push_back(std::move(sphere));
+    return scene;
+}
+
+} // namespace
+
+SphereRoomAccuracy sphereRoomAccuracy(bool quick) {
+    const Scene scene = makeSphereRoom();
+    MeshingOptions meshing;
+    meshing.maxPatchArea = 0.02;
+    const PatchMesh mesh = meshScene(scene, meshing);
+    const auto reference = makeSolver(SolverMethod::GaussSeidel, scene, mesh);
+    for (int k = 0; k < 500 && reference->step().residual > 1e-9; ++k) {
+    }
+    HierarchicalSolver solver(scene, mesh, SolverOptions{}, nullptr);
+    for (int k = 0; k < 200 && solver.step().residual > 1e-6; ++k) {
+    }
+    SphereRoomAccuracy result;
+    result.leaves = solver.elements().leafCount();
+    result.links = solver.links().size();
+    const std::vector<Rgb> hierarchical = surfaceMeans(scene, mesh, solver.solution());
+    const std::vector<Rgb> gaussSeidel = surfaceMeans(scene, mesh, reference->solution());
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        if (scene.materials[scene.surfaces[s].material].emits()) continue;
+        const double off = std::abs(hierarchical[s].x / gaussSeidel[s].x - 1);
+        if (off > result.worstSurface) {
+            result.worstSurface = off;
+            result.worstSurfaceName = scene.surfaces[s].name;
+        }
+    }
+    result.sphereMean = hierarchical.back().x;
+    result.sphereMeanGaussSeidel = gaussSeidel.back().x;
+
+    // One face's centre on each of the rings 1, 7 and 14 (segment 3): under the lamp, at the equator
+    // facing the walls, and over the floor in the sphere's own shadow.
+    const RayCaster rays(scene);
+    const PathTracer tracer(scene, rays);
+    ReferenceStop stop;
+    stop.relativeStandardError = quick ? 0.005 : 0.001;
+    stop.time = std::chrono::duration<double>(quick ? 2.0 : 20.0);
+    const Probe probe(scene, mesh, nullptr);
+    const Surface& sphere = scene.surfaces.back();
+    for (const auto& [where, face] : {std::pair{"sphere, top", 32 + 3}, std::pair{"sphere, equator", 6 * 32 + 3 + 32},
+                                      std::pair{"sphere, bottom", 13 * 32 + 3 + 32}}) {
+        const Face& f = sphere.faces[static_cast<std::size_t>(face)];
+        glm::dvec3 point(0.0);
+        for (const glm::dvec3& v : f.vertices) point += v / static_cast<double>(f.vertices.size());
+        ReferenceRun run(tracer, locateReferencePoint(scene, point, f.normal));
+        const double traced = run.runUntil(stop).radiosity.value().x;
+        const SurfacePoint at = probe.locate(point, f.normal);
+        const double atPoint = solver.radiosityAt(at.surface, at.face, at.point).x;
+        std::size_t patch = mesh.surfaceFirstPatch[scene.surfaces.size() - 1];
+        while (patch + 1 < mesh.surfaceFirstPatch.back() && mesh.patches[patch].face != static_cast<std::uint32_t>(face)) ++patch;
+        const double atPatch = solver.solution()[patch].x;
+        result.worstPoint = std::max(result.worstPoint, std::abs(atPoint / traced - 1));
+        result.worstPatch = std::max(result.worstPatch, std::abs(atPatch / traced - 1));
+        result.points.push_back(std::string(where) + ": traced " + formatNumber(traced, 4) + ", point " +
+                                formatNumber(atPoint, 4) + ", its patch " + formatNumber(atPatch, 4) + " W/m^2");
+    }
+    return result;
 }
 
 FurnaceError furnaceError(std::size_t elements, double linkEpsilonScale) {

@@ -72,6 +72,21 @@ PointError pointError(const HierarchicalSolver& solver, const CornellBoxAsShown&
 std::vector<double> pointErrors(const HierarchicalSolver& solver, const CornellBoxAsShown& box,
                                 const PointReference& reference);
 
+/// Issue #20 item 6's case: a 32 x 16 UV sphere (radius 0.5 m, reflectance 0.5) in a closed 2 m box
+/// room (reflectance 0.5) under a 0.6 m ceiling lamp of 50 W/m^2, built as
+/// tests/data/make_sphere_room.py writes tests/data/curved/sphere_room.gltf. The hierarchical solve
+/// (SolverOptions defaults) on 0.02 m^2 patches against Gauss-Seidel on the same mesh (per surface,
+/// relative), and its point values on the sphere (top, equator, bottom) against the path tracer.
+struct SphereRoomAccuracy {
+    double worstSurface = 0;  ///< relative, surface means against Gauss-Seidel
+    std::string worstSurfaceName;
+    double sphereMean = 0, sphereMeanGaussSeidel = 0;  ///< W/m^2
+    std::vector<std::string> points;                  ///< per point: where, reference, point and patch values
+    double worstPoint = 0, worstPatch = 0;             ///< relative, against the path tracer
+    std::size_t leaves = 0, links = 0;
+};
+SphereRoomAccuracy sphereRoomAccuracy(bool quick);
+
 /// A leaf's radiosity in the furnace against its closed form E / (1 - rho): area-weighted rms and
 /// worst relative difference over the leaves.
 struct FurnaceError {

@@ -133,9 +133,8 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     double visible = 1, share = 1;
     if (caster_) {
         const std::uint64_t seed = pairSeed(options_.seed, receiver, source);
-        visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed);
-        share = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, hierarchical::mix(seed ^ 0x5bd1e995ull));
-        rays = 2 * static_cast<std::size_t>(visibilityRays_);
+        visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed, &rays);
+        share = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, hierarchical::mix(seed ^ 0x5bd1e995ull), &rays);
     }
     // Partly visible: the visible share may vary across the receiver by the whole form factor.
     // Fully hidden: only a gap the rays missed could carry light.
