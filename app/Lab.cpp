@@ -69,7 +69,7 @@ struct Lab::State {
           window({options.width, options.height, windowTitle(initialScene->name, kSolveDefaults.method),
                   options.visible, options.vsync}),
           gl(render::queryGlInfo()),
-          orbit(orbitFromHome(*initialScene)),
+          orbit(orbitFromHome(*initialScene, nullptr)),
           panelsVisible(options.showPanels),
           live(solverThread),
           patchArea(options.maxPatchArea) {
@@ -191,7 +191,9 @@ struct Lab::State {
         patches->setFocusLinks(s.focusLinkSegments);
         patches->setImportance(s.importance);
         if (s.scene->name != sceneShown) {
-            if (!sceneShown.empty()) orbit = orbitFromHome(*s.scene);
+            // The home view casts with the scene's one ray caster, which the solver thread builds
+            // (the window's first frames used the outside framing meanwhile).
+            orbit = orbitFromHome(*s.scene, s.rays.get());
             viewSent.reset();  // the solver thread forgot the old scene's camera
             sceneShown = s.scene->name;
         }

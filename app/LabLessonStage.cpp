@@ -60,7 +60,7 @@ void LabLessonStage::setMaterial(const lesson::SetMaterial& edit) {
 
 void LabLessonStage::placeCamera(const lesson::PlaceCamera& place) {
     if (place.home) {
-        orbit_ = orbitFromHome(*live_.snapshot().scene);
+        orbit_ = orbitFromHome(*live_.snapshot().scene, live_.snapshot().rays.get());
         return;
     }
     render::Camera camera;

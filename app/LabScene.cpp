@@ -14,9 +14,9 @@ std::shared_ptr<const Scene> openScene(const std::string& nameOrPath) {
     return std::make_shared<const Scene>(std::move(loaded.scene));
 }
 
-render::OrbitCamera orbitFromHome(const Scene& scene) {
+render::OrbitCamera orbitFromHome(const Scene& scene, const RayCaster* rays) {
     glm::dvec3 lo, hi;
-    const render::Camera home = render::homeCamera(scene);
+    const render::Camera home = rays ? render::homeCamera(scene, rays) : render::cameraFromView(homeViewWithoutRays(scene));
     if (!sceneBounds(scene, lo, hi)) return render::OrbitCamera(home, home.eye + home.forward);
     return render::OrbitCamera(home, (lo + hi) / 2.0);
 }

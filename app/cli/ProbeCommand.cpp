@@ -86,8 +86,9 @@ int runProbe(const ProbeCommandOptions& options) {
     const MethodChoice choice = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes);
     const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
-    const RayCaster rays(scene);
-    const Probe probe(scene, mesh, &rays);
+    // One BVH for the scene: the probe's visibility and the solver's share it.
+    const auto rays = std::make_shared<const RayCaster>(scene);
+    const Probe probe(scene, mesh, rays.get());
     std::vector<std::string> warnings = scene.warnings;
     glm::dvec3 onSurface = point;
     if (const std::optional<SurfaceSnap> snap = probe.snapOntoSurface(point, kSnapDistance)) {
@@ -108,6 +109,7 @@ int runProbe(const ProbeCommandOptions& options) {
     double residual = 1;
     try {
         SolverOptions solverOptions;
+        solverOptions.rays = rays;
         solverOptions.linkEpsilon = options.linkTolerance;
         solverOptions.view = viewFromArguments(options.view, scene);
         std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);

@@ -81,7 +81,10 @@ View insideView(const glm::dvec3& lo, const glm::dvec3& hi) {
 
 } // namespace
 
-View homeView(const Scene& scene, const RayCaster* rays) {
+namespace {
+
+/// The Cornell camera or the scene's own glTF camera, when the scene has one of them.
+std::optional<View> givenView(const Scene& scene) {
     if (scene.name == "cornell-box") return cornellView();
     // A glTF camera is where the scene's author meant it to be seen from.
     if (!scene.cameras.empty() && scene.cameras.front().verticalFieldOfView > 0) {
@@ -94,6 +97,20 @@ View homeView(const Scene& scene, const RayCaster* rays) {
         if (camera.aspectRatio > 0) view.aspect = camera.aspectRatio;
         return view;
     }
+    return std::nullopt;
+}
+
+} // namespace
+
+View homeViewWithoutRays(const Scene& scene) {
+    if (const std::optional<View> given = givenView(scene)) return *given;
+    glm::dvec3 lo, hi;
+    if (!sceneBounds(scene, lo, hi)) return cornellView();
+    return framingView(lo, hi);
+}
+
+View homeView(const Scene& scene, const RayCaster* rays) {
+    if (const std::optional<View> given = givenView(scene)) return *given;
     glm::dvec3 lo, hi;
     if (!sceneBounds(scene, lo, hi)) return cornellView();
     const View outside = framingView(lo, hi);

@@ -38,5 +38,8 @@ bool sceneBounds(const Scene& scene, glm::dvec3& lo, glm::dvec3& hi);
 /// Casts a few hundred rays.
 /// `rays`: the scene's ray caster when the caller has one; null builds one when the rule needs it.
 View homeView(const Scene& scene, const RayCaster* rays = nullptr);
+/// The same without casting a ray: the outside framing where homeView would choose between inside
+/// and outside. For a window's first frame, before the scene's one ray caster exists.
+View homeViewWithoutRays(const Scene& scene);
 
 } // namespace radiant

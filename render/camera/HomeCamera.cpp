@@ -4,6 +4,6 @@
 
 namespace radiant::render {
 
-Camera homeCamera(const Scene& scene) { return cameraFromView(homeView(scene)); }
+Camera homeCamera(const Scene& scene, const RayCaster* rays) { return cameraFromView(homeView(scene, rays)); }
 
 } // namespace radiant::render

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "app/Lab.h"
+#include "radiometry/geometry/RayCaster.h"
 #include "app/solver/SolverThread.h"
 #include "app/window/PickRay.h"
 #include "app/window/Window.h"
@@ -67,6 +68,7 @@ TEST_CASE("a closed room opens showing its floor from the home camera, and a cli
     options.vsync = false;
     options.maxPatchArea = 0.25;
     options.runOnStart = false;
+    const std::uint64_t castersBefore = RayCaster::constructed();
     Lab lab(options);
     frameUntil(lab, [](const app::Snapshot& s) { return s.mesh && s.solverBuilds >= 1 && !s.running; });
     lab.send(command::Run{});
@@ -104,6 +106,9 @@ TEST_CASE("a closed room opens showing its floor from the home camera, and a cli
     CHECK(glm::distance(reading.at.point, floorPoint) < 1e-3);
     CHECK(reading.radiosity.value().x > 0.0);
     CHECK(reading.irradiance.value().x > reading.radiosity.value().x);  // B = rho E with rho 0.55
+    // One BVH for the room: the solver thread's, which the home view's inside-or-outside choice, the
+    // solver, the pick and the probe all cast with.
+    CHECK(RayCaster::constructed() - castersBefore == 1);
 }
 
 TEST_CASE("seen from outside, a closed room's near walls are culled like a cut-away, and the floor shows through") {

@@ -130,4 +130,16 @@ TEST_CASE("`radiant lesson check` exits 0 on the shipped lessons and 2 on a bad 
     std::filesystem::remove(bad);
 }
 
+TEST_CASE("a bad session file is refused in one line") {
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "radiant-test-bad-session.json";
+    std::ofstream(file) << R"({"title": "Radiant session", "session": "yes", "steps": []})";
+    try {
+        (void)readLesson(file);
+        FAIL("accepted");
+    } catch (const RadiantError& error) {
+        CHECK(std::string(error.what()) == file.string() + ": session: expected true or false, found string");
+    }
+    std::filesystem::remove(file);
+}
+
 } // TEST_SUITE
