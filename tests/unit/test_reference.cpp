@@ -40,7 +40,6 @@ using namespace radiant;
 
 namespace {
 
-constexpr double kPi = std::numbers::pi;
 
 using test::pointToCornerRectangle;
 
