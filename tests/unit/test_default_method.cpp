@@ -26,6 +26,7 @@
 #include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
+#include "tests/support/RunRadiant.h"
 
 using namespace radiant;
 using namespace radiant::app;
@@ -35,28 +36,8 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-struct Run {
-    int status = -1;
-    std::string out;
-    std::string err;
-};
-
-/// Runs the radiant binary with `arguments`; stdout and stderr apart; `timeout` ends a hang.
-Run runRadiant(const std::string& arguments) {
-    const std::string errFile = (fs::temp_directory_path() / ("radiant-default-method-" + std::to_string(::getpid()) + ".err")).string();
-    const std::string command = "timeout 120 '" + std::string(RADIANT_BINARY) + "' " + arguments + " 2>'" + errFile + "'";
-    Run run;
-    FILE* pipe = popen(command.c_str(), "r");
-    REQUIRE(pipe);
-    std::array<char, 512> chunk{};
-    while (std::fgets(chunk.data(), static_cast<int>(chunk.size()), pipe)) run.out += chunk.data();
-    const int status = pclose(pipe);
-    run.status = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-    std::ifstream in(errFile);
-    run.err.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-    fs::remove(errFile);
-    return run;
-}
+using Run = test::CommandRun;
+using test::runRadiant;
 
 /// The unit cube's largest patch area for about `patches` patches (its six square metres).
 double areaFor(std::size_t patches) { return 6.0 / static_cast<double>(patches); }
