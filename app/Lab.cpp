@@ -172,6 +172,13 @@ struct Lab::State {
             lessonsPanel->focusPath();
             sidebar.focus("Lessons");
             break;
+        case LabAction::UndoMaterial:
+        case LabAction::RedoMaterial: {
+            const bool undoing = action == LabAction::UndoMaterial;
+            const std::string done = undoing ? MaterialsPanel::undo(live) : MaterialsPanel::redo(live);
+            message = done.empty() ? std::string(undoing ? "no material edit to undo" : "no material edit to redo") : done;
+            break;
+        }
         case LabAction::Screenshot: screenshotRequested = true; break;
         }
     }

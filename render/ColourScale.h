@@ -35,8 +35,19 @@ private:
 /// of a 9-entry table of sRGB-encoded colours. The shader holds the same table.
 glm::dvec3 viridis(double t);
 
+/// What false colour shows and its unit, for every legend (3D view, render PNGs, Display panel).
+inline constexpr const char* kFalseColourQuantity = "radiosity, sum of R+G+B";
+inline constexpr const char* kFalseColourUnit = "W/m^2";
+/// With photometric units on: the illuminance each patch receives, E = (B - M) / rho per band (the
+/// radiosity equation read backwards), as 179 lm/W x Y(E) (radiometry/units/Photometry.h).
+inline constexpr const char* kIlluminanceQuantity = "illuminance";
+inline constexpr const char* kIlluminanceUnit = "lx";
+
 /// What false colour maps: [minW_m2, maxW_m2] to [0, 1] of the colour map, linearly or on log10.
+/// The values are in `unit` (W/m^2 unless photometric: lx); the names keep the radiometric default.
 struct ColourLegend {
+    const char* quantity = kFalseColourQuantity;
+    const char* unit = kFalseColourUnit;
     double minW_m2 = 0;
     double maxW_m2 = 1;
     bool logScale = false;
@@ -57,9 +68,6 @@ struct ColourLegend {
 /// A linear legend from 0 to maxW_m2, or a log legend over `decades` decades below it, with round ticks.
 ColourLegend makeLegend(double maxW_m2, bool logScale, int decades);
 
-/// What false colour shows and its unit, for every legend (3D view, render PNGs, Display panel).
-inline constexpr const char* kFalseColourQuantity = "radiosity, sum of R+G+B";
-inline constexpr const char* kFalseColourUnit = "W/m^2";
 
 /// A tick's label: short, exact for 1-2-5 values ("0", "0.02", "500", "2k", "1e-05").
 std::string formatLegendTick(double valueW_m2);

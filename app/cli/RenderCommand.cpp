@@ -41,6 +41,7 @@ struct RenderOptions {
     ViewArguments view;
     bool falseColour = false;
     bool logScale = false;
+    bool photometric = false;
     bool flat = false;
     bool wireframe = false;
     float exposureStops = 0.0f;
@@ -133,6 +134,7 @@ int runRender(const RenderOptions& options) {
     settings.exposureKey = render::ExposureKey::Automatic;
     settings.colourMode = options.falseColour ? render::ColourMode::FalseColour : render::ColourMode::ToneMapped;
     settings.logScale = options.logScale;
+    settings.photometric = options.photometric;
     settings.shading = options.flat ? render::Shading::Flat : render::Shading::Smooth;
     settings.wireframe = options.wireframe;
     settings.highlightShooter = false;
@@ -147,8 +149,8 @@ int runRender(const RenderOptions& options) {
                 options.png.c_str(), options.width, options.height);
     const render::ColourLegend legend = renderer.legend();
     if (options.falseColour)
-        std::printf("false colour: total radiosity %g to %g W/m^2 (%s) on viridis\n", legend.minW_m2, legend.maxW_m2,
-                    legend.logScale ? "log" : "linear");
+        std::printf("false colour: %s %g to %g %s (%s) on viridis\n", legend.quantity, legend.minW_m2, legend.maxW_m2,
+                    legend.unit, legend.logScale ? "log" : "linear");
     else
         std::printf("exposure %+g stops: key %.4g W/m^2 (mean luminance of lit non-emitters), ACES-fitted, sRGB\n",
                     static_cast<double>(options.exposureStops), renderer.exposureKeyW_m2());
@@ -173,6 +175,8 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_flag("--false-colour,--false-color", options->falseColour,
                   "total radiosity in W/m^2 through viridis instead of the tone-mapped picture, with its legend");
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");
+    sub->add_flag("--photometric", options->photometric,
+                  "false colour maps the illuminance each patch receives in lx (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B)");
     sub->add_flag("--flat", options->flat, "each patch its own radiosity (no interpolation)");
     sub->add_flag("--wireframe", options->wireframe, "draw the patch edges");
     sub->add_option("--exposure", options->exposureStops, "exposure in stops relative to the automatic key")

@@ -66,7 +66,8 @@ void DisplayPanel::draw() {
     help("Radiosity through the exposure and tone curve: what an eye would see.");
     ImGui::SameLine();
     ImGui::RadioButton("false colour", &colour, static_cast<int>(render::ColourMode::FalseColour));
-    help("Total radiosity B_r + B_g + B_b in W/m\xC2\xB2 through the viridis colour map.");
+    help("Total radiosity B_r + B_g + B_b in W/m\xC2\xB2 through the viridis colour map;\n"
+         "with photometric units on, the illuminance each patch receives, in lx.");
     ImGui::SameLine();
     ImGui::RadioButton("reflectance", &colour, static_cast<int>(render::ColourMode::Reflectance));
     help("Each surface in its material's reflectance: the scene as built, before light.");
@@ -83,7 +84,7 @@ void DisplayPanel::draw() {
         if (manualRange_) {
             ImGui::SetNextItemWidth(-labelRoom);
             ImGui::DragFloat("Max", &s.falseColourMaxW_m2, std::max(s.falseColourMaxW_m2 * 0.01f, 1e-4f), 1e-4f, 1e7f,
-                             "%.4g W/m\xC2\xB2", ImGuiSliderFlags_Logarithmic);
+                             s.photometric ? "%.4g lx" : "%.4g W/m\xC2\xB2", ImGuiSliderFlags_Logarithmic);
             s.falseColourMaxW_m2 = std::max(s.falseColourMaxW_m2, 1e-4f);
         } else {
             s.falseColourMaxW_m2 = 0.0f;
@@ -106,8 +107,14 @@ void DisplayPanel::draw() {
     help("Importance-driven radiosity's per-patch importance, relative to its maximum (magenta).");
 
     ImGui::Spacing();
-    ImGui::Checkbox("Photometric units (lx, cd/m\xC2\xB2)", &s.photometric);
-    help("The Probe panel also reads illuminance in lux and luminance in cd/m\xC2\xB2, converted from\n"
+    if (ImGui::Checkbox("Photometric units (lx, cd/m\xC2\xB2)", &s.photometric)) {
+        // A manual maximum was in the other unit: the range goes back to automatic.
+        manualRange_ = false;
+        s.falseColourMaxW_m2 = 0.0f;
+    }
+    help("The Probe panel also reads illuminance in lux and luminance in cd/m\xC2\xB2, and false colour\n"
+         "maps illuminance in lux (E = (B - M) / rho per band, the radiosity equation read backwards;\n"
+         "a surface black in a band shows grey: B says nothing of the light it gets there). Converted from\n"
          "the three bands by Radiance's convention: luminous efficacy 179 lm/W and\n"
          "Y = 0.265 R + 0.670 G + 0.065 B, so E_v = 179 Y(E) and L_v = 179 Y(L).\n"
          "glTF lights given in candela and lux are read with the same 179 lm/W.");
@@ -160,7 +167,9 @@ void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {
         lastLabelEnd = left + labelWidth;
     }
     ImGui::Dummy(ImVec2(width + 2 * margin, barHeight + font * 1.6f));
-    ImGui::TextDisabled("%s, %s, %s", kUnit, legend.logScale ? "log scale" : "linear",
+    const bool radiometric = std::string(legend.unit) == render::kFalseColourUnit;
+    ImGui::TextDisabled("%s, %s, %s, %s", legend.quantity, radiometric ? kUnit : legend.unit,
+                        legend.logScale ? "log scale" : "linear",
                         settings_.falseColourMaxW_m2 > 0 ? "manual max" : "automatic max");
 }
 

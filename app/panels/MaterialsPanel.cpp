@@ -44,6 +44,8 @@ void MaterialsPanel::draw() {
     drawSurfaceList(scene);
     drawEditor(scene);
     ImGui::Spacing();
+    drawUndoButtons();
+    ImGui::SameLine();
     if (ImGui::Button("Reset materials")) {
         editing_ = false;
         refusal_.clear();
@@ -51,6 +53,30 @@ void MaterialsPanel::draw() {
     }
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Every reflectance and exitance back to the scene's as loaded;\nthe solve starts again from B = E");
+}
+
+void MaterialsPanel::drawUndoButtons() {
+    const MaterialEditHistory& history = live_.materialEdits;
+    const auto button = [&](const char* label, bool enabled, const std::string& what, const char* keys) {
+        ImGui::BeginDisabled(!enabled);
+        const bool pressed = ImGui::Button(label);
+        ImGui::EndDisabled();
+        if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+            ImGui::SetTooltip(enabled ? "%s: %s (%s)" : "%s: nothing to %s (%s)", label,
+                              enabled ? what.c_str() : label, keys);
+        return pressed;
+    };
+    if (button("Undo", history.canUndo(), history.undoLabel(), "Ctrl+Z")) {
+        editing_ = false;
+        refusal_.clear();
+        undo(live_);
+    }
+    ImGui::SameLine();
+    if (button("Redo", history.canRedo(), history.redoLabel(), "Ctrl+Y")) {
+        editing_ = false;
+        refusal_.clear();
+        redo(live_);
+    }
 }
 
 void MaterialsPanel::followProbe(const Snapshot& snapshot) {
@@ -162,9 +188,35 @@ void MaterialsPanel::apply(bool continuesEdit) {
 void MaterialsPanel::resetMaterials(LiveSolve& live) {
     const Snapshot& shown = live.snapshot();
     const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    if (shown.scene) {
+        live.materialEdits.follow(*shown.scene, shown.rays.get());
+        live.materialEdits.recordReset(*shown.scene);
+    }
     live.send(command::ResetMaterials{});
     if (shown.running || converged) live.send(command::Run{});
 }
+
+namespace {
+
+std::string sendHistoryStep(LiveSolve& live, bool undoing) {
+    const Snapshot& shown = live.snapshot();
+    if (!shown.scene) return {};
+    MaterialEditHistory& history = live.materialEdits;
+    history.follow(*shown.scene, shown.rays.get());
+    const std::string what = undoing ? history.undoLabel() : history.redoLabel();
+    const std::vector<SolverCommand> commands = undoing ? history.undo() : history.redo();
+    if (commands.empty()) return {};
+    // As an edit: a running or converged solve resumes from its solution, a paused one stays paused.
+    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    for (const SolverCommand& command : commands) live.send(command);
+    if (shown.running || converged) live.send(command::Run{});
+    return (undoing ? "undid: " : "redid: ") + what;
+}
+
+} // namespace
+
+std::string MaterialsPanel::undo(LiveSolve& live) { return sendHistoryStep(live, true); }
+std::string MaterialsPanel::redo(LiveSolve& live) { return sendHistoryStep(live, false); }
 
 std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const Rgb& reflectance,
                                    const Rgb& exitanceW_m2, bool continuesEdit) {
@@ -188,6 +240,10 @@ std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const R
     const Snapshot& shown = live.snapshot();
     // Not the history: a material edit starts a new, empty segment of it before the next step.
     const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    if (shown.scene) {
+        live.materialEdits.follow(*shown.scene, shown.rays.get());
+        live.materialEdits.recordEdit(*shown.scene, surface, {reflectance, exitanceW_m2}, continuesEdit);
+    }
     live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2), continuesEdit});
     // A running or converged solve re-solves live, from its current solution (no new form
     // factors). A paused or stepped one stays as the teacher left it: the next step shows the edit.

@@ -4,7 +4,8 @@
 // An edit goes to the solver thread as command::SetMaterial: the solve resumes from where it was,
 // with the same form factors. Values out of range are refused with a warning, never clamped.
 // A point picked with the probe selects its surface; "Reset materials" brings back the scene's
-// materials as loaded and restarts the solve.
+// materials as loaded and restarts the solve. Every edit and reset can be undone (Ctrl+Z, Ctrl+Y:
+// MaterialEditHistory).
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -38,8 +39,13 @@ public:
     static std::string submit(LiveSolve& live, std::size_t surface, const Rgb& reflectance, const Rgb& exitanceW_m2,
                               bool continuesEdit = false);
     /// Every material back to the scene's as loaded; the solve restarts from B = E, and runs again
-    /// when it was running or had converged.
+    /// when it was running or had converged. Undoable.
     static void resetMaterials(LiveSolve& live);
+    /// Ctrl+Z / Ctrl+Y: undoes or redoes the newest material edit (a whole drag, or a reset) and
+    /// resumes the solve as an edit does. Returns what it changed for the status bar ("undid the
+    /// edit of Floor"), or empty when there was nothing to undo or redo.
+    static std::string undo(LiveSolve& live);
+    static std::string redo(LiveSolve& live);
     /// The surface selected for editing.
     [[nodiscard]] std::size_t selected() const { return selected_; }
 
@@ -49,6 +55,7 @@ private:
     void loadFrom(const Scene& scene);
     void apply(bool continuesEdit);
     void followProbe(const Snapshot& snapshot);
+    void drawUndoButtons();
 
     LiveSolve& live_;
     ProbedPoint probed_;

@@ -5,6 +5,7 @@
 #include <memory>
 #include <utility>
 
+#include "app/solver/MaterialEditHistory.h"
 #include "app/solver/SolverThread.h"
 
 namespace radiant::app {
@@ -24,6 +25,8 @@ struct LiveSolve {
 
     SolverThread& thread;
     std::shared_ptr<const Snapshot> current;  ///< never null
+    /// Undo and redo of material edits, whoever made them (panel, lesson, session): main thread only.
+    MaterialEditHistory materialEdits;
 };
 
 } // namespace radiant::app

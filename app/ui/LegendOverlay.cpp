@@ -26,8 +26,9 @@ LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     // "W/m²" with the UI font's superscript two; the quantity on its own line keeps the window narrow.
-    ImGui::TextUnformatted(render::kFalseColourQuantity);
-    ImGui::TextDisabled("W/m\xC2\xB2%s", legend.logScale ? ", log scale" : "");
+    ImGui::TextUnformatted(legend.quantity);
+    const bool radiometric = std::string(legend.unit) == render::kFalseColourUnit;
+    ImGui::TextDisabled("%s%s", radiometric ? "W/m\xC2\xB2" : legend.unit, legend.logScale ? ", log scale" : "");
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

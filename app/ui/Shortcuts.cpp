@@ -20,6 +20,8 @@ constexpr Shortcut kShortcuts[] = {
     {LabAction::PreviousLessonStep, GLFW_KEY_PAGE_UP, 0, "Page Up", "previous step of the open lesson", false},
     {LabAction::SaveSession, GLFW_KEY_S, 0, "Ctrl+S", "save the session (scene, materials, method, camera, probe, display) as `radiant-session-YYYYMMDD-HHMMSS.json`", false, true},
     {LabAction::OpenFile, GLFW_KEY_O, 0, "Ctrl+O", "open a lesson or session file (the Lessons panel's path field)", false, true},
+    {LabAction::UndoMaterial, GLFW_KEY_Z, 0, "Ctrl+Z", "undo the last material edit (a whole drag, or Reset materials)", false, true},
+    {LabAction::RedoMaterial, GLFW_KEY_Y, 0, "Ctrl+Y", "redo the material edit undone", false, true},
     {LabAction::Screenshot, GLFW_KEY_F12, 0, "F12", "save a screenshot (`radiant-YYYYMMDD-HHMMSS.png`)", false},
     {LabAction::Quit, GLFW_KEY_ESCAPE, 0, "Esc", "quit", false},
 };

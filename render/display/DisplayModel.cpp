@@ -8,12 +8,19 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/EnergyBalance.h"
+#include "radiometry/units/Photometry.h"
 #include "render/SceneTriangles.h"
 
 namespace radiant::render {
 namespace {
 
 double total(const Rgb& b) { return b.x + b.y + b.z; }
+
+/// Below this a band's reflectance says too little of the light arriving there to divide by.
+constexpr double kSmallestReflectanceForIlluminance = 1e-3;
+
+/// A surface black in a band shows this instead of a colour-map colour when illuminance is mapped.
+constexpr Tint kUnknownValueTint{0.55f, 0.55f, 0.55f, 0.96f};
 
 /// The smallest of 1, 1.5, 2, 2.5, 3, 4, 5, 6, 8 x 10^k at least `value`: an automatic range that
 /// holds still while the solution creeps up, and reads well on the legend.
@@ -42,6 +49,9 @@ void DisplayModel::setMesh(const Scene& scene, const PatchMesh& mesh) {
         patchArea_[p] = mesh.patches[p].area;
     }
     smoothing_ = findSmoothingGroups(mesh);
+    vertexPatch_.assign(smoothing_.vertexCount, 0);
+    for (std::size_t p = 0; p < n; ++p)
+        for (std::uint8_t k = 0; k < smoothing_.cornerCount[p]; ++k) vertexPatch_[smoothing_.cornerVertex[p][k]] = static_cast<std::uint32_t>(p);
     grids_ = findFaceGrids(scene, mesh);
     hasRadiosity_ = false;
     generation_ = 0;
@@ -53,7 +63,6 @@ void DisplayModel::setMesh(const Scene& scene, const PatchMesh& mesh) {
     importanceShown_.reset();
     automaticKeyW_m2_ = 1.0;
     heldKeyW_m2_ = 0.0;
-    maxTotalW_m2_ = 0.0;
     dataMaxMemoW_m2_ = 1.0;
     dataMaxStale_ = false;
     setMaterials(scene, /*rekey=*/true);
@@ -63,11 +72,16 @@ void DisplayModel::setMaterials(const Scene& scene, bool rekey) {
     const EnergyBalance balance = enclosureEnergyBalance(scene, patchSurface_, patchArea_);
     patchEmits_.resize(patchSurface_.size());
     baseColour_.resize(patchSurface_.size());
+    patchReflectance_.resize(patchSurface_.size());
+    patchExitance_.resize(patchSurface_.size());
     for (std::size_t p = 0; p < patchSurface_.size(); ++p) {
         const Material& material = scene.materials.at(scene.surfaces[patchSurface_[p]].material);
         patchEmits_[p] = material.emits() ? 1 : 0;
         baseColour_[p] = displayColour(material);
+        patchReflectance_[p] = material.reflectance;
+        patchExitance_[p] = material.exitance.value();
     }
+    if (settings_.photometric) dataMaxStale_ = true;  // illuminance depends on the materials
     // A scene that had nothing to key on derives the key anew on any edit.
     if (rekey || !(energyBalanceKeyW_m2_ > 0))
         energyBalanceKeyW_m2_ = balance.anythingEmits ? luminanceOf(balance.meanRadiosityW_m2) : 0.0;
@@ -114,7 +128,6 @@ bool DisplayModel::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_
     render::smoothRadiosity(smoothing_, patchArea_, radiosityW_m2, smoothRadiosity_);
     // Before light has bounced, only the emitters are lit: key and range follow them then.
     automaticKeyW_m2_ = litArea > 0 ? litLuminance / litArea : std::max(maxTotal / 3.0, 1e-30);
-    maxTotalW_m2_ = maxTotal;
     dataMaxStale_ = true;
     radiosity_.assign(radiosityW_m2.begin(), radiosityW_m2.end());
     hasRadiosity_ = true;
@@ -135,40 +148,59 @@ void DisplayModel::setImportance(std::shared_ptr<const std::vector<double>> impo
 }
 
 void DisplayModel::setSettings(const DisplaySettings& settings) {
+    if (settings.photometric != settings_.photometric && hasRadiosity_) dataMaxStale_ = true;
     settings_ = settings;
     const bool heldButUnset = settings.exposureKey == ExposureKey::Held && heldKeyW_m2_ <= 0;
     if (settings.rekeyCount != rekeysSeen_ || heldButUnset) heldKeyW_m2_ = automaticKeyW_m2_;
     rekeysSeen_ = settings.rekeyCount;
 }
 
+double DisplayModel::mappedValue(const Rgb& b, std::size_t patch) const {
+    if (!settings_.photometric) return total(b);
+    const Rgb& rho = patchReflectance_[patch];
+    if (std::min({rho.x, rho.y, rho.z}) < kSmallestReflectanceForIlluminance) return std::nan("");
+    // B = M + rho E band by band, for every method's solution (the emitters' own light excluded).
+    const Rgb irradiance = (b - patchExitance_[patch]) / rho;
+    return illuminanceLux(IrradianceRgb(glm::max(irradiance, Rgb(0.0))));
+}
+
 double DisplayModel::dataMaxW_m2() const {
     if (!dataMaxStale_) return dataMaxMemoW_m2_;
-    std::vector<std::pair<double, double>> reflectorTotals;  // (total radiosity, area) of non-emitters
-    reflectorTotals.reserve(radiosity_.size());
-    double reflectorArea = 0;
-    for (std::size_t p = 0; p < radiosity_.size(); ++p)
+    std::vector<std::pair<double, double>> reflectorValues;  // (mapped value, area) of non-emitters
+    reflectorValues.reserve(radiosity_.size());
+    double reflectorArea = 0, largest = 0;
+    for (std::size_t p = 0; p < radiosity_.size(); ++p) {
+        const double value = mappedValue(radiosity_[p], p);
+        if (!std::isfinite(value)) continue;
+        largest = std::max(largest, value);
         if (!patchEmits_[p]) {
-            reflectorTotals.emplace_back(total(radiosity_[p]), patchArea_[p]);
+            reflectorValues.emplace_back(value, patchArea_[p]);
             reflectorArea += patchArea_[p];
         }
+    }
     // The automatic range ends at the 99th area percentile of the reflectors: a few hot patches
     // (beside an emitter, in a corner) would otherwise squash everything else into the bottom of
     // the colour map. Brighter patches show the top colour.
-    std::sort(reflectorTotals.begin(), reflectorTotals.end());
-    double percentileTotal = 0, area = 0;
-    for (const auto& [value, patchAreaM2] : reflectorTotals) {
-        percentileTotal = value;
+    std::sort(reflectorValues.begin(), reflectorValues.end());
+    double percentileValue = 0, area = 0;
+    for (const auto& [value, patchAreaM2] : reflectorValues) {
+        percentileValue = value;
         area += patchAreaM2;
         if (area >= 0.99 * reflectorArea) break;
     }
-    dataMaxMemoW_m2_ = roundUpForLegend(percentileTotal > 0 ? percentileTotal : maxTotalW_m2_);
+    dataMaxMemoW_m2_ = roundUpForLegend(percentileValue > 0 ? percentileValue : largest);
     dataMaxStale_ = false;
     return dataMaxMemoW_m2_;
 }
 
 ColourLegend DisplayModel::legend() const {
     const double top = settings_.falseColourMaxW_m2 > 0 ? static_cast<double>(settings_.falseColourMaxW_m2) : dataMaxW_m2();
-    return makeLegend(top, settings_.logScale, DisplaySettings::kLogDecades);
+    ColourLegend legend = makeLegend(top, settings_.logScale, DisplaySettings::kLogDecades);
+    if (settings_.photometric) {
+        legend.quantity = kIlluminanceQuantity;
+        legend.unit = kIlluminanceUnit;
+    }
+    return legend;
 }
 
 double DisplayModel::exposureKeyW_m2() const {
@@ -190,7 +222,8 @@ double DisplayModel::exposureScale() const {
 
 DisplayModel::ColourInputs DisplayModel::colourInputs() const {
     const DisplaySettings& d = settings_;
-    return {exposureScale(), d.colourMode, d.logScale, d.falseColourMaxW_m2, d.highlightShooter, d.showImportance, d.shading};
+    return {exposureScale(), d.colourMode, d.logScale, d.falseColourMaxW_m2, d.highlightShooter, d.showImportance, d.shading,
+            d.photometric};
 }
 
 void DisplayModel::makeTints(const ColourInputs& inputs) {
@@ -199,6 +232,8 @@ void DisplayModel::makeTints(const ColourInputs& inputs) {
     bool anyTint = false;
     for (std::size_t p = 0; p < n; ++p) {
         Tint tint(0.0f);
+        if (inputs.mode == ColourMode::FalseColour && hasRadiosity_ && !std::isfinite(mappedValue(radiosity_[p], p)))
+            tint = addTint(tint, kUnknownValueTint);
         if (inputs.importance) tint = addTint(tint, {1.0f, 0.1f, 0.8f, 0.6f * static_cast<float>(importance_[p])});
         const bool isShooter = inputs.highlight && hasRadiosity_ && static_cast<std::int64_t>(p) == shooter_;
         if (inputs.highlight && hasRadiosity_ && changed_[p]) tint = addTint(tint, {1.0f, 0.55f, 0.15f, 0.22f});
@@ -218,8 +253,10 @@ bool DisplayModel::refreshColours() {
     // legend's percentile sort.
     const bool falseColour = inputs.mode == ColourMode::FalseColour;
     const ColourLegend range = falseColour ? legend() : ColourLegend{};
-    const auto colourOf = [&](const Rgb& b) {
-        const float position = falseColour ? static_cast<float>(range.position(total(b))) : 0.0f;
+    const auto colourOf = [&](const Rgb& b, std::size_t patch) {
+        double value = falseColour ? mappedValue(b, patch) : 0.0;
+        if (!std::isfinite(value)) value = 0.0;  // tinted grey (makeTints)
+        const float position = falseColour ? static_cast<float>(range.position(value)) : 0.0f;
         return glm::vec4(toneCurve_(b.x * scale), toneCurve_(b.y * scale), toneCurve_(b.z * scale), position);
     };
     DisplayColours& c = colours_;
@@ -230,9 +267,9 @@ bool DisplayModel::refreshColours() {
     if (hasRadiosity_ && inputs.mode != ColourMode::Reflectance) {
         // Only the shading shown.
         if (c.smooth)
-            for (std::size_t v = 0; v < c.vertex.size(); ++v) c.vertex[v] = colourOf(smoothRadiosity_[v]);
+            for (std::size_t v = 0; v < c.vertex.size(); ++v) c.vertex[v] = colourOf(smoothRadiosity_[v], vertexPatch_[v]);
         else
-            for (std::size_t p = 0; p < n; ++p) c.patch[p] = colourOf(radiosity_[p]);
+            for (std::size_t p = 0; p < n; ++p) c.patch[p] = colourOf(radiosity_[p], p);
     } else {
         for (std::size_t p = 0; p < n; ++p) {
             const glm::vec3 encoded(static_cast<float>(linearToSrgb(baseColour_[p].x)),

@@ -94,10 +94,15 @@ private:
         bool highlight = false;
         bool importance = false;
         Shading shading = Shading::Smooth;
+        bool photometric = false;
         bool operator==(const ColourInputs&) const = default;
     };
     [[nodiscard]] ColourInputs colourInputs() const;
     [[nodiscard]] double dataMaxW_m2() const;
+    /// What false colour maps for radiosity `b` on `patch` (or a vertex of it), in the legend's unit:
+    /// total radiosity in W/m^2, or with photometric units the illuminance in lx; NaN where it
+    /// cannot be known (illuminance on a surface black in some band).
+    [[nodiscard]] double mappedValue(const Rgb& b, std::size_t patch) const;
     void makeTints(const ColourInputs& inputs);
 
     DisplaySettings settings_;
@@ -105,6 +110,9 @@ private:
     std::vector<double> patchArea_;
     std::vector<char> patchEmits_;
     std::vector<glm::vec3> baseColour_;  // linear: reflectance, or an emitter's chromaticity
+    std::vector<Rgb> patchReflectance_;
+    std::vector<Rgb> patchExitance_;     // W/m^2
+    std::vector<std::uint32_t> vertexPatch_;  // per smoothing vertex: a patch it belongs to (one surface)
     SmoothingGroups smoothing_;
     FaceGrids grids_;
     std::vector<double> importance_;  // relative to its maximum
@@ -122,7 +130,6 @@ private:
     double energyBalanceKeyW_m2_ = 0.0;  // from the materials; 0 when nothing emits
     double heldKeyW_m2_ = 0.0;           // 0 until re-keyed
     unsigned rekeysSeen_ = 0;
-    double maxTotalW_m2_ = 0.0;
     // The 99th area percentile behind the automatic false-colour range, sorted only when asked (a
     // memo: legend() is const, and the tone-mapped view never asks).
     mutable double dataMaxMemoW_m2_ = 1.0;

@@ -69,7 +69,7 @@ int barRow(const LegendLayout& layout, double position) {
 } // namespace
 
 std::string legendTitle(const ColourLegend& legend) {
-    return std::string(kFalseColourQuantity) + ", " + kFalseColourUnit + (legend.logScale ? ", log" : "");
+    return std::string(legend.quantity) + ", " + legend.unit + (legend.logScale ? ", log" : "");
 }
 
 LegendLayout layoutLegend(const ColourLegend& legend, int imageWidth, int imageHeight) {
