@@ -77,8 +77,9 @@ struct Lab::State {
         // Our callbacks first: ImGui's backend installs its own and chains to these.
         glfwSetWindowUserPointer(window.handle(), this);
         glfwSetKeyCallback(window.handle(), [](GLFWwindow* w, int key, int, int action, int mods) {
-            if (action == GLFW_RELEASE) return;
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
+            if (action == GLFW_PRESS && self->ui) self->ui->notePress(key);
+            if (action == GLFW_RELEASE) return;
             // Typing into a field, or a slider being dragged, keeps its keys; a panel merely
             // clicked does not (the lecturer's presenter sends Space and Page Down whatever was
             // clicked last).
@@ -324,8 +325,10 @@ struct Lab::State {
         if (const std::optional<glm::dvec2> click = controller.click())
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
-        if (panelsVisible) drawStatusBar(viewInUiUnits, status());
-        drawLessonCaption(lessons, viewInUiUnits);
+        const float statusHeight = panelsVisible ? drawStatusBar(viewInUiUnits, status()) : 0.0f;
+        render::Viewport aboveStatus = viewInUiUnits;
+        aboveStatus.height = std::max(1, aboveStatus.height - static_cast<int>(std::ceil(statusHeight)));
+        drawLessonCaption(lessons, aboveStatus);
         if (display.colourMode == render::ColourMode::FalseColour) drawLegendOverlay(patches->legend(), viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);

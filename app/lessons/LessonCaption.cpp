@@ -13,7 +13,8 @@ void drawLessonCaption(const LessonPlayer& lessons, const render::Viewport& view
     const lesson::LessonStep& step = lessons.lesson().steps[lessons.step()];
     const float margin = ImGui::GetFontSize();
     const float width = std::max(12 * margin, std::min(0.7f * static_cast<float>(view.width), 40 * margin));
-    ImGui::SetNextWindowPos({static_cast<float>(view.x) + margin, static_cast<float>(view.y + view.height) - 2.5f * margin},
+    // `view` ends above the status bar (Lab), which grows a line when its text wraps.
+    ImGui::SetNextWindowPos({static_cast<float>(view.x) + margin, static_cast<float>(view.y + view.height) - 0.5f * margin},
                             ImGuiCond_Always, {0.0f, 1.0f});
     ImGui::SetNextWindowSizeConstraints({0, 0}, {width, static_cast<float>(view.height) * 0.6f});
     ImGui::SetNextWindowBgAlpha(0.72f);

@@ -62,8 +62,7 @@ void MaterialsPanel::drawUndoButtons() {
         const bool pressed = ImGui::Button(label);
         ImGui::EndDisabled();
         if (ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
-            ImGui::SetTooltip(enabled ? "%s: %s (%s)" : "%s: nothing to %s (%s)", label,
-                              enabled ? what.c_str() : label, keys);
+            ImGui::SetTooltip("%s: %s (%s)", label, enabled ? what.c_str() : "no material edit yet", keys);
         return pressed;
     };
     if (button("Undo", history.canUndo(), history.undoLabel(), "Ctrl+Z")) {
@@ -210,7 +209,7 @@ std::string sendHistoryStep(LiveSolve& live, bool undoing) {
     const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
     for (const SolverCommand& command : commands) live.send(command);
     if (shown.running || converged) live.send(command::Run{});
-    return (undoing ? "undid: " : "redid: ") + what;
+    return (undoing ? "undid " : "redid ") + what + (undoing ? " (Ctrl+Y redoes it)" : "");
 }
 
 } // namespace

@@ -88,9 +88,9 @@ std::vector<SolverCommand> MaterialEditHistory::redo() {
 }
 
 std::string MaterialEditHistory::label(const Entry& entry) {
-    if (entry.reset) return "reset materials (" + std::to_string(entry.changes.size()) + " surfaces)";
-    if (entry.changes.size() == 1) return entry.changes.front().name;
-    return std::to_string(entry.changes.size()) + " surfaces";
+    if (entry.reset) return "Reset materials (" + std::to_string(entry.changes.size()) + " surfaces)";
+    if (entry.changes.size() == 1) return "the edit of " + entry.changes.front().name;
+    return "the edits of " + std::to_string(entry.changes.size()) + " surfaces";
 }
 
 std::string MaterialEditHistory::undoLabel() const { return done_.empty() ? "" : label(done_.back()); }

@@ -47,8 +47,8 @@ public:
 
     [[nodiscard]] bool canUndo() const { return !done_.empty(); }
     [[nodiscard]] bool canRedo() const { return !undone_.empty(); }
-    /// What undo / redo would change, for the buttons' tooltips and the status bar: "Floor", "3
-    /// surfaces", "reset materials"; empty when there is nothing.
+    /// What undo / redo would change, for the buttons' tooltips and the status bar: "the edit of
+    /// floor", "Reset materials (2 surfaces)"; empty when there is nothing.
     [[nodiscard]] std::string undoLabel() const;
     [[nodiscard]] std::string redoLabel() const;
 

@@ -79,6 +79,20 @@ void ImGuiLayer::newFrame() {
     if (scale_ != appliedScale_) applyScale();
     ImGui_ImplOpenGL3_NewFrame();
     ImGui_ImplGlfw_NewFrame();
+    ImGuiIO& keys = ImGui::GetIO();
+    // Let go of last frame's one-frame presses (unless pressed again), then show this frame's
+    // presses that were already released; index = GLFW key code, as 1.86's GLFW backend maps them.
+    const auto inRange = [&](int key) { return key >= 0 && key < static_cast<int>(IM_ARRAYSIZE(keys.KeysDown)); };
+    for (const int key : heldForOneFrame_)
+        if (inRange(key) && std::find(pressedSinceFrame_.begin(), pressedSinceFrame_.end(), key) == pressedSinceFrame_.end())
+            keys.KeysDown[key] = false;
+    heldForOneFrame_.clear();
+    for (const int key : pressedSinceFrame_)
+        if (inRange(key) && !keys.KeysDown[key]) {
+            keys.KeysDown[key] = true;
+            heldForOneFrame_.push_back(key);
+        }
+    pressedSinceFrame_.clear();
     if (mouseOverride_) {  // after the backend, which writes the real pointer's state
         ImGuiIO& io = ImGui::GetIO();
         io.MousePos = {mouseOverride_->x, mouseOverride_->y};
@@ -86,6 +100,8 @@ void ImGuiLayer::newFrame() {
     }
     ImGui::NewFrame();
 }
+
+void ImGuiLayer::notePress(int glfwKey) { pressedSinceFrame_.push_back(glfwKey); }
 
 bool ImGuiLayer::keyboardClaimed() {
     if (!ImGui::GetCurrentContext()) return false;

@@ -3,6 +3,7 @@
 // The UI scale rebuilds the font atlas at the new pixel size (sharp text on a projector) and
 // rescales the style's spacing from the unscaled theme.
 #include <optional>
+#include <vector>
 
 struct GLFWwindow;
 
@@ -28,6 +29,13 @@ public:
     /// slider dragged). Everywhere else the lab's shortcuts act, whatever was clicked last.
     [[nodiscard]] static bool keyboardClaimed();
 
+    /// Every key press the window gets, before ImGui's own callback sees it. Dear ImGui 1.86 (Debian
+    /// 12's) reads keys as held-down states once per frame, so a press and release that arrive
+    /// between two frames (xdotool, a presenter remote, a quick tap on a slow software-GL frame)
+    /// were never seen: Return in a path field did nothing. newFrame() holds such a key down for
+    /// one frame and lets it go on the next, as ImGui 1.87's input queue does.
+    void notePress(int glfwKey);
+
     void newFrame();
     void render();
 
@@ -41,6 +49,8 @@ private:
     float scale_;
     float appliedScale_ = 0;
     std::optional<MouseOverride> mouseOverride_;
+    std::vector<int> pressedSinceFrame_;  ///< GLFW key codes pressed since the last newFrame()
+    std::vector<int> heldForOneFrame_;    ///< keys newFrame() showed down that were already up
 };
 
 } // namespace radiant::app

@@ -1,6 +1,7 @@
 #pragma once
 // A strip along the bottom of the 3D view: what the lab is busy with (loading, meshing, form
 // factors, with a progress bar), the solve's state, and the last message (a saved screenshot).
+// As many lines as its text needs at the UI scale: nothing is cut off at the view's edge.
 // Drawn over the view, so it shows even when every panel is collapsed.
 #include <string>
 
@@ -15,7 +16,8 @@ struct StatusLine {
     std::string message;    ///< the last one-off message, e.g. "saved radiant-20260101-120000.png"
 };
 
-/// `view` in ImGui coordinates. Call between ImGui's NewFrame and Render.
-void drawStatusBar(const render::Viewport& view, const StatusLine& status);
+/// `view` in ImGui coordinates. Call between ImGui's NewFrame and Render. Returns the strip's
+/// height (ImGui units), which other overlays at the view's bottom keep clear of.
+float drawStatusBar(const render::Viewport& view, const StatusLine& status);
 
 } // namespace radiant::app

@@ -78,7 +78,7 @@ TEST_CASE("Ctrl+Z undoes material edits newest first and the solve returns to it
     lab.frame();
     CHECK(reflectanceOf(lab, rightWall) == wallReflectance);
     CHECK(reflectanceOf(lab, floor) == Rgb(0.1));
-    CHECK(lab.statusMessage().find("undid: right wall") != std::string::npos);
+    CHECK(lab.statusMessage().find("undid the edit of right wall") != std::string::npos);
 
     lab.pressKey(GLFW_KEY_Z, true);
     lab.waitForSolver();

@@ -43,7 +43,7 @@ TEST_CASE("a drag is undone in one step, back to where it began, and redone to w
     history.recordEdit(scene, 0, {Rgb(0.4), Rgb(0.0)}, false);
     history.recordEdit(scene, 0, {Rgb(0.3), Rgb(0.0)}, true);
     history.recordEdit(scene, 0, {Rgb(0.2), Rgb(0.0)}, true);
-    CHECK(history.undoLabel() == "floor");
+    CHECK(history.undoLabel() == "the edit of floor");
 
     const auto undone = history.undo();
     REQUIRE(undone.size() == 1);
@@ -87,7 +87,7 @@ TEST_CASE("a reset is undone by putting back every edited surface, and redone by
     history.recordEdit(scene, 0, {Rgb(0.4), Rgb(0.0)}, false);
     history.recordEdit(scene, 1, {Rgb(0.0), Rgb(20.0)}, false);
     history.recordReset(scene);
-    CHECK(history.undoLabel() == "reset materials (2 surfaces)");
+    CHECK(history.undoLabel() == "Reset materials (2 surfaces)");
     const auto undone = history.undo();
     REQUIRE(undone.size() == 2);
     CHECK(setMaterial(undone[0]).reflectance == Rgb(0.4));
