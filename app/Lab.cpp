@@ -223,9 +223,13 @@ struct Lab::State {
             line.fraction = solverThread.progress().fraction();
         }
         char text[320];
-        if (s.stats.iteration == 0 && !s.methodReason.empty())  // the default by size: say why
-            std::snprintf(text, sizeof text, "%s (%s) - %s", methodLabel(s.method), s.methodReason.c_str(),
-                          s.running ? "starting" : "ready");
+        if (s.stats.iteration == 0 && !s.methodReason.empty()) {
+            // The default by size: the size here, the whole reason in the Solver panel (a line
+            // that wraps over the picture's bottom is too much for a status strip).
+            const std::string size = s.methodReason.substr(0, s.methodReason.find(':'));
+            std::snprintf(text, sizeof text, "%s (default for %s; why: Solver panel) - %s", methodLabel(s.method),
+                          size.c_str(), s.running ? "starting" : "ready");
+        }
         else if (s.stats.iteration == 0)
             std::snprintf(text, sizeof text, "%s - %s", methodLabel(s.method), s.running ? "starting" : "ready");
         else

@@ -44,8 +44,8 @@ struct DisplaySettings {
     /// Contour lines at each tick of the legend (false colour only).
     bool isolines = false;
     bool wireframe = false;
-    /// Step mode: outline the last shooting patch, and tint the patches whose radiosity changed
-    /// visibly in the last update (unless most did, as in a gathering sweep).
+    /// Step mode: outline the last shooting patch, and tint the patches the shot changed
+    /// visibly (unless most did; a gathering sweep tints nothing).
     bool highlightShooter = true;
     bool showLinks = false;       ///< hierarchical links as line segments
     bool showImportance = false;  ///< per-patch importance as a magenta tint

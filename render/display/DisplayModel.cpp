@@ -121,9 +121,10 @@ bool DisplayModel::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_
             litLuminance += patchArea_[p] * luminanceOf(b);
         }
     }
-    // A tint on every patch (a gathering sweep) says nothing and hides the picture: tint only when the
-    // step touched part of the scene, as a shot does.
-    if (2 * static_cast<std::size_t>(std::count(changed_.begin(), changed_.end(), 1)) > n)
+    // Only a shot's reach is tinted: a gathering sweep updates every patch, and the few a late sweep
+    // still moves visibly (its front, mid-surface) drew an orange staircase on a converged picture.
+    // A shot that changes most of the scene says nothing by its tint either.
+    if (shooter < 0 || 2 * static_cast<std::size_t>(std::count(changed_.begin(), changed_.end(), 1)) > n)
         std::fill(changed_.begin(), changed_.end(), 0);
     render::smoothRadiosity(smoothing_, patchArea_, radiosityW_m2, smoothRadiosity_);
     // Before light has bounced, only the emitters are lit: key and range follow them then.

@@ -76,7 +76,7 @@ public:
     [[nodiscard]] std::size_t patchCount() const { return patchSurface_.size(); }
     [[nodiscard]] bool hasRadiosity() const { return hasRadiosity_; }
     [[nodiscard]] std::int64_t shooter() const { return hasRadiosity_ ? shooter_ : -1; }
-    /// Per patch: its radiosity changed visibly in the last update (all zero after a sweep).
+    /// Per patch: the last shot changed its radiosity visibly (all zero after a gathering step).
     [[nodiscard]] const std::vector<char>& changed() const { return changed_; }
     [[nodiscard]] const std::vector<Rgb>& smoothRadiosity() const { return smoothRadiosity_; }
     [[nodiscard]] const SmoothingGroups& smoothing() const { return smoothing_; }
