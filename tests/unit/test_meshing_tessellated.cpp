@@ -2,7 +2,8 @@
 // counts, so one large triangle no longer sets the count of every triangle of its surface. The
 // meshes stay conforming (Euler characteristic, no T-junctions), keep their area and stay under the
 // requested patch area, and the physics holds against closed forms (docs/reference.md): inside a
-// closed enclosure that emits E and reflects rho everywhere, B = E / (1 - rho) on every patch.
+// closed enclosure that emits E and reflects rho everywhere, B = E / (1 - rho) on every patch, and a
+// floor given as uneven triangles solves as the same floor given as one quad.
 // Scenes from tests/data/make_grouping_scenes.py. Tolerances are relative.
 // ctest-labels: threads
 #include <doctest/doctest.h>
@@ -49,6 +50,40 @@ double areaOf(const PatchMesh& mesh, std::size_t surface) {
     for (std::size_t p = mesh.surfaceFirstPatch[surface]; p < mesh.surfaceFirstPatch[surface + 1]; ++p)
         sum += mesh.patches[p].area;
     return sum;
+}
+
+/// A closed 2 m box seen from inside: a glowing ceiling (E = 1, black), grey walls (0.5) and a floor
+/// (0.7) given as `floor`.
+Scene boxWithFloor(std::vector<Face> floor) {
+    const auto quad = [](glm::dvec3 a, glm::dvec3 b, glm::dvec3 c, glm::dvec3 d) { return makeFace({a, b, c, d}); };
+    Scene scene;
+    scene.name = "floor box";
+    scene.materials = {{"walls", Rgb(0.5), ExitanceRgb{}}, {"ceiling", Rgb(0.0), ExitanceRgb(Rgb(1.0))},
+                       {"floor", Rgb(0.7), ExitanceRgb{}}};
+    scene.surfaces.push_back({"floor", 2, std::move(floor), "test"});
+    scene.surfaces.push_back({"ceiling", 1, {quad({0, 2, 0}, {2, 2, 0}, {2, 2, 2}, {0, 2, 2})}, "test"});
+    scene.surfaces.push_back({"walls", 0,
+                              {quad({0, 0, 0}, {0, 2, 0}, {0, 2, 2}, {0, 0, 2}), quad({2, 0, 0}, {2, 0, 2}, {2, 2, 2}, {2, 2, 0}),
+                               quad({0, 0, 0}, {2, 0, 0}, {2, 2, 0}, {0, 2, 0}), quad({0, 0, 2}, {0, 2, 2}, {2, 2, 2}, {2, 0, 2})},
+                              "test"});
+    return scene;
+}
+
+/// Gauss-Seidel's area-weighted mean radiosity (red band) of each surface, factors unoccluded.
+std::vector<double> surfaceMeans(const Scene& scene, const PatchMesh& mesh) {
+    SolverOptions options;
+    options.formFactors.visibilityRays = 0;  // a convex room: nothing in the way
+    auto solver = makeGaussSeidelSolver(scene, mesh, computeFormFactorMatrix(scene, mesh, options, nullptr));
+    for (int k = 0; k < 1000 && solver->step().residual > 1e-9; ++k) {
+    }
+    std::vector<double> means;
+    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
+        double power = 0;
+        for (std::size_t p = mesh.surfaceFirstPatch[s]; p < mesh.surfaceFirstPatch[s + 1]; ++p)
+            power += mesh.patches[p].area * solver->solution()[p].x;
+        means.push_back(power / areaOf(mesh, s));
+    }
+    return means;
 }
 
 Scene loadGrouping(const std::string& file) {
@@ -101,6 +136,43 @@ TEST_CASE("unequal edge counts: every stitched triangle under the area, its core
             CHECK(eulerCharacteristic(mesh, 0) == 1);
             CHECK(countTJunctions(mesh, 0, 0.01) == 0);
         }
+    }
+}
+
+TEST_CASE("a floor of uneven triangles gives what the same floor as one quad gives, meshed at the same area") {
+    // Grid lines at 0, 0.05, 0.1, 0.6, 1.4 and 2 m: triangles from 0.00125 to 0.32 m^2, so at
+    // 0.02 m^2 large ones are cut to lattices, small ones zipped to their neighbours' edges.
+    const std::vector<double> lines{0, 0.05, 0.1, 0.6, 1.4, 2};
+    std::vector<Face> triangles;
+    for (std::size_t i = 0; i + 1 < lines.size(); ++i)
+        for (std::size_t j = 0; j + 1 < lines.size(); ++j) {
+            const glm::dvec3 a{lines[i], 0, lines[j]}, b{lines[i + 1], 0, lines[j]};
+            const glm::dvec3 c{lines[i + 1], 0, lines[j + 1]}, d{lines[i], 0, lines[j + 1]};
+            // Facing up (+y): counter-clockwise seen from above is a, d, c, b. Diagonals alternate.
+            if ((i + j) % 2 == 0) {
+                triangles.push_back(makeFace({a, d, c}));
+                triangles.push_back(makeFace({a, c, b}));
+            } else {
+                triangles.push_back(makeFace({a, d, b}));
+                triangles.push_back(makeFace({d, c, b}));
+            }
+        }
+    const Scene tessellated = boxWithFloor(triangles);
+    const Scene whole = boxWithFloor({makeFace({{0, 0, 0}, {0, 0, 2}, {2, 0, 2}, {2, 0, 0}})});
+    const double maxArea = 0.02;
+    const PatchMesh tessellatedMesh = meshScene(tessellated, {maxArea});
+    const PatchMesh wholeMesh = meshScene(whole, {maxArea});
+    CHECK(eulerCharacteristic(tessellatedMesh, 0) == 1);
+    CHECK(countTJunctions(tessellatedMesh, 0, 0.05) == 0);
+    MESSAGE("floor: " << patchesOf(tessellatedMesh, 0) << " patches from triangles, " << patchesOf(wholeMesh, 0)
+                      << " from one quad");
+    CHECK(static_cast<double>(patchesOf(tessellatedMesh, 0)) < 2 * 4 / maxArea);
+    const std::vector<double> fromTriangles = surfaceMeans(tessellated, tessellatedMesh);
+    const std::vector<double> fromQuad = surfaceMeans(whole, wholeMesh);
+    for (std::size_t s = 0; s < fromQuad.size(); ++s) {
+        CAPTURE(tessellated.surfaces[s].name);
+        MESSAGE(tessellated.surfaces[s].name << ": " << fromTriangles[s] << " from triangles, " << fromQuad[s] << " from one quad");
+        CHECK(fromTriangles[s] == relativeTo(fromQuad[s], 5e-4));
     }
 }
 
