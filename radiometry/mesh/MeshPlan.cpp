@@ -100,6 +100,19 @@ double largestQuadCell(const std::array<glm::dvec3, 4>& p, const glm::dvec3& uni
     return largest / (static_cast<double>(nu) * static_cast<double>(nv));
 }
 
+std::size_t longestEdge(const std::vector<glm::dvec3>& corners, const Piece& piece) {
+    std::size_t longest = 0;
+    double longestLength = -1;
+    for (std::size_t e = 0; e < piece.count; ++e) {
+        const double length = glm::distance(corners[piece.corners[e]], corners[piece.corners[(e + 1) % piece.count]]);
+        if (length > longestLength) {
+            longestLength = length;
+            longest = e;
+        }
+    }
+    return longest;
+}
+
 std::string describe(double value) {
     char text[32];
     std::snprintf(text, sizeof text, "%g", value);
@@ -162,11 +175,22 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
             piece.edges[e] = edgeBetween(piece.corners[e], piece.corners[(e + 1) % piece.count]);
         const double area = 0.5 * glm::length(newellNormal(plan.corners, piece));
         if (piece.count == 3) {
+            if (area <= 2 * maxArea * (1 + kAreaSlack)) {
+                // Halving suffices: two segments on the longest edge. Cut by a zipper (Meshing.cpp),
+                // no triangle exceeds area / 2 once any edge carries two.
+                if (area > maxArea * (1 + kAreaSlack)) classes.require(piece.edges[longestEdge(plan.corners, piece)], 2);
+                continue;
+            }
             // Uniform n-subdivision: n^2 triangles, each area / n^2 and similar to the piece.
+            // Every edge carries at least n, so the stitched ring (Meshing.cpp) stays under maxArea.
             const std::uint64_t n = segmentsFor(std::sqrt(area), std::sqrt(maxArea));
+            piece.fitsTwoPatches = false;
             for (std::size_t e = 0; e < 3; ++e) classes.require(piece.edges[e], n);
-            classes.unite(piece.edges[0], piece.edges[1]);
+        } else if (area <= maxArea * (1 + kAreaSlack)) {
+            // Already a patch: cutting it near-square would make patches far under the requested
+            // size and pass the count along its rows of quads.
             classes.unite(piece.edges[0], piece.edges[2]);
+            classes.unite(piece.edges[1], piece.edges[3]);
         } else {
             // Cells of side s along both directions; for a parallelogram with angle theta the cell
             // area is s^2 sin(theta), hence the scaling of s by lu lv / area = 1 / sin(theta).
@@ -221,6 +245,30 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
 
 } // namespace
 
+TriangleCut triangleCut(const Piece& piece, std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    if (a == b && b == c) return TriangleCut::Lattice;
+    return piece.fitsTwoPatches ? TriangleCut::Zipper : TriangleCut::Core;
+}
+
+std::uint64_t triangleCoreSegments(std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+    const std::uint64_t n = std::max({a, b, c});
+    return a == b && b == c ? n : std::max<std::uint64_t>(n, 3);
+}
+
+double SurfacePlan::patchCount(const Piece& piece) const {
+    const auto a = static_cast<double>(segments(piece.edges[0])), b = static_cast<double>(segments(piece.edges[1]));
+    if (piece.count == 4) return a * b;
+    const auto c = static_cast<double>(segments(piece.edges[2]));
+    const TriangleCut cut = triangleCut(piece, segments(piece.edges[0]), segments(piece.edges[1]), segments(piece.edges[2]));
+    if (cut == TriangleCut::Lattice) return a * a;
+    if (cut == TriangleCut::Zipper) return a + b + c - 2;  // a convex polygon of a + b + c corners
+    // A core of n segments has (n - 3)^2 triangles inside its ring of interior vertices; the ring
+    // to the edges holds one triangle per edge segment and one per core-side segment.
+    const auto n = static_cast<double>(triangleCoreSegments(segments(piece.edges[0]), segments(piece.edges[1]),
+                                                            segments(piece.edges[2])));
+    return (n - 3) * (n - 3) + a + b + c + 3 * (n - 3);
+}
+
 MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
     if (!(options.maxPatchArea > 0) || !std::isfinite(options.maxPatchArea)) {
         throw RadiantError({scene.name, "max patch area"},
@@ -230,11 +278,7 @@ MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
     const double tolerance = weldTolerance(scene);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
         plan.surfaces.push_back(planSurface(scene, s, options.maxPatchArea, tolerance));
-        for (const Piece& piece : plan.surfaces.back().pieces) {
-            const auto& sp = plan.surfaces.back();
-            const auto nu = static_cast<double>(sp.segments(piece.edges[0]));
-            plan.patchCount += piece.count == 3 ? nu * nu : nu * static_cast<double>(sp.segments(piece.edges[1]));
-        }
+        for (const Piece& piece : plan.surfaces.back().pieces) plan.patchCount += plan.surfaces.back().patchCount(piece);
     }
     return plan;
 }

@@ -4,9 +4,13 @@
 // meshScene() emits from a plan; estimatePatchCount() only counts it, so both agree exactly.
 //
 // Conformity comes from the constraints on the counts: a quad's opposite edges carry the same
-// count (its n x m grid), a triangle's three edges the same count (its uniform n-subdivision), and
-// an edge shared by two pieces is one edge. Equal-count constraints form equivalence classes of
-// edges (union-find), and each class takes the largest count any of its pieces asks for.
+// count (its n x m grid) and an edge shared by two pieces is one edge. Equal-count constraints form
+// equivalence classes of edges (union-find), and each class takes the largest count any of its
+// pieces asks for. A triangle's three edges stay free: one with equal counts is cut uniformly, one
+// with unequal counts is triangulated between its edges' vertices or, when larger than a patch,
+// gets a uniform core stitched to its edges (TriangleCut). Tying a triangle's
+// edges together would chain every triangle of a tessellated surface into one class, so that its
+// largest triangle set the count of all: a 3,072-triangle rounded cube became 27,162 patches.
 #include <array>
 #include <cstdint>
 #include <vector>
@@ -23,6 +27,9 @@ struct Piece {
     std::uint8_t count = 0;                  ///< 3 or 4
     std::array<std::uint32_t, 4> corners{};  ///< welded corner ids within the surface, face order
     std::array<std::uint32_t, 4> edges{};    ///< edge i runs corners[i] -> corners[(i + 1) % count]
+    /// A triangle of at most two patches' area (it asks for two segments on its longest edge at
+    /// most): unequal edge counts then need no vertex inside it.
+    bool fitsTwoPatches = true;
 };
 
 struct PlanEdge {
@@ -37,7 +44,22 @@ struct SurfacePlan {
     std::vector<std::uint64_t> classSegments; ///< class -> segment count (>= 1)
 
     [[nodiscard]] std::uint64_t segments(std::uint32_t edge) const { return classSegments[edgeClass[edge]]; }
+    /// Patches meshScene() cuts the piece into (double: see MeshPlan::patchCount).
+    [[nodiscard]] double patchCount(const Piece& piece) const;
 };
+
+/// How meshScene() cuts a triangle piece with edge counts a, b, c.
+enum class TriangleCut {
+    Lattice,  ///< equal counts: the uniform lattice, a^2 similar triangles
+    Zipper,   ///< unequal counts on a triangle that fits two patches: its edge vertices alone,
+              ///< joined across, a + b + c - 2 triangles
+    Core,     ///< unequal counts on a larger triangle: a lattice core stitched to the edges
+};
+TriangleCut triangleCut(const Piece& piece, std::uint64_t a, std::uint64_t b, std::uint64_t c);
+
+/// Segments of a triangle's lattice: the largest of its edge counts, but at least 3 for a Core cut
+/// (whose core is then at least the centroid, to which the edges are stitched).
+std::uint64_t triangleCoreSegments(std::uint64_t a, std::uint64_t b, std::uint64_t c);
 
 struct MeshPlan {
     std::vector<SurfacePlan> surfaces;

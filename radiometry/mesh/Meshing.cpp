@@ -4,9 +4,12 @@
 // T-junctions within a surface (Baum, Mann, Smith and Winget, "Making radiosity usable: automatic
 // preprocessing and meshing techniques for the generation of accurate radiosity solutions",
 // SIGGRAPH 1991, on why T-junctions show as cracks and shading seams).
+#include <array>
 #include <cstdio>
 #include <limits>
 #include <string>
+
+#include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/MeshPlan.h"
@@ -105,9 +108,19 @@ private:
                 addPatch(piece, {at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
     }
 
-    // Barycentric lattice (i, j): point p0 + i/n (p1 - p0) + j/n (p2 - p0), i + j <= n.
+    // Barycentric lattice (i, j): point p0 + i/n (p1 - p0) + j/n (p2 - p0), i + j <= n. Equal edge
+    // counts make the plain lattice; unequal ones keep its interior (a core lattice of n - 3
+    // segments on the vertices with i, j, n - i - j >= 1) and stitch the core's sides to the edges.
     void emitTriangle(const Piece& piece) {
-        const std::uint64_t n = plan_.segments(piece.edges[0]);
+        const std::array<std::uint64_t, 3> edge{plan_.segments(piece.edges[0]), plan_.segments(piece.edges[1]),
+                                                plan_.segments(piece.edges[2])};
+        const detail::TriangleCut cut = detail::triangleCut(piece, edge[0], edge[1], edge[2]);
+        if (cut == detail::TriangleCut::Zipper) {
+            emitZipper(piece);
+            return;
+        }
+        const std::uint64_t n = detail::triangleCoreSegments(edge[0], edge[1], edge[2]);
+        const bool uniform = cut == detail::TriangleCut::Lattice;
         const glm::dvec3 p0 = corner(piece, 0), p1 = corner(piece, 1), p2 = corner(piece, 2);
         const auto interiorBase = static_cast<std::uint32_t>(mesh_.vertices.size());
         // Interior rows j = 1..n-2 hold i = 1..n-1-j; rowStart[j] is the first of row j.
@@ -121,17 +134,101 @@ private:
                 mesh_.vertices.push_back(p0 + u * (p1 - p0) + v * (p2 - p0));
             }
         }
-        const auto at = [&](std::uint64_t i, std::uint64_t j) -> std::uint32_t {
+        const auto interior = [&](std::uint64_t i, std::uint64_t j) { return rowStart[j] + static_cast<std::uint32_t>(i - 1); };
+        if (!uniform) {
+            for (std::size_t side = 0; side < 3; ++side) stitch(piece, side, n, interior);
+            emitLattice(piece, n - 3, [&](std::uint64_t i, std::uint64_t j) { return interior(i + 1, j + 1); });
+            return;
+        }
+        emitLattice(piece, n, [&](std::uint64_t i, std::uint64_t j) -> std::uint32_t {
             if (j == 0) return onEdge(piece, 0, i);
             if (i + j == n) return onEdge(piece, 1, j);
             if (i == 0) return onEdge(piece, 2, n - j);
-            return rowStart[j] + static_cast<std::uint32_t>(i - 1);
-        };
+            return interior(i, j);
+        });
+    }
+
+    /// A triangle that fits two patches and whose edges carry unequal counts: the convex polygon
+    /// of its edge vertices, triangulated without a vertex inside. With corners A, B, C named so
+    /// that C -> A is the edge with the most segments (at least 2), the chain A -> B -> C is zipped
+    /// against the chain A -> C (that edge reversed), each step taking the shorter new diagonal.
+    /// Neither chain steps onto C before the other is next to it, so a step's three vertices never
+    /// lie on one edge and no triangle is degenerate. Each triangle has its base on an edge segment
+    /// and its apex on another edge: a base on C -> A, on an edge cut at least twice, or a whole
+    /// edge (the first and last triangles, whose apex is one segment of C -> A from its end) bounds
+    /// it by half the piece's area, so it stays within the requested area.
+    void emitZipper(const Piece& piece) {
+        std::size_t most = 0;
+        for (std::size_t side = 1; side < 3; ++side)
+            if (plan_.segments(piece.edges[side]) > plan_.segments(piece.edges[most])) most = side;
+        const std::size_t ab = (most + 1) % 3, bc = (most + 2) % 3, ca = most;
+        std::vector<std::uint32_t> right, left;
+        for (const std::size_t side : {ab, bc}) {
+            const std::uint64_t n = plan_.segments(piece.edges[side]);
+            for (std::uint64_t k = 0; k < n; ++k) right.push_back(onEdge(piece, side, k));
+        }
+        right.push_back(onEdge(piece, ca, 0));
+        const std::uint64_t nca = plan_.segments(piece.edges[ca]);
+        for (std::uint64_t k = 0; k <= nca; ++k) left.push_back(onEdge(piece, ca, nca - k));
+        const auto length = [&](std::uint32_t a, std::uint32_t b) { return glm::distance(mesh_.vertices[a], mesh_.vertices[b]); };
+        const std::size_t lastRight = right.size() - 1, lastLeft = left.size() - 1;  // both C
+        addPatch(piece, {right[0], right[1], left[1]});
+        std::size_t i = 1, j = 1;
+        while (i + 1 < lastRight || j + 1 < lastLeft) {
+            const bool canRight = i + 1 < lastRight, canLeft = j + 1 < lastLeft;
+            const bool stepRight = canRight && (!canLeft || length(right[i + 1], left[j]) <= length(right[i], left[j + 1]));
+            if (stepRight) {
+                addPatch(piece, {right[i], right[i + 1], left[j]});
+                ++i;
+            } else {
+                addPatch(piece, {right[i], left[j + 1], left[j]});
+                ++j;
+            }
+        }
+        if (i < lastRight && j < lastLeft) addPatch(piece, {right[i], right[lastRight], left[j]});
+    }
+
+    /// The n^2 triangles of a lattice of n segments, row by row, up(i, j) then down(i, j): the
+    /// order ProgressiveShooters recognises.
+    template <class Vertex>
+    void emitLattice(const Piece& piece, std::uint64_t n, const Vertex& at) {
         for (std::uint64_t j = 0; j < n; ++j)
             for (std::uint64_t i = 0; i + j < n; ++i) {
                 addPatch(piece, {at(i, j), at(i + 1, j), at(i, j + 1)});
                 if (i + j + 1 < n) addPatch(piece, {at(i + 1, j), at(i + 1, j + 1), at(i, j + 1)});
             }
+    }
+
+    /// Triangulates the band between edge `side` (its own count of segments) and the parallel side
+    /// of the core, one lattice step inside, advancing along whichever polyline is behind. Each
+    /// triangle has one side on a polyline and its apex on the other, one step away, so none
+    /// exceeds the piece's area over (its own count x n): under the requested area, as every edge
+    /// carries at least the piece's own count. The inner vertex comes first, so no band triangle
+    /// passes ProgressiveShooters' lattice test.
+    template <class Interior>
+    void stitch(const Piece& piece, std::size_t side, std::uint64_t n, const Interior& interior) {
+        const std::uint64_t outerCount = plan_.segments(piece.edges[side]);
+        std::vector<std::uint32_t> inner;  // the core's side, from the side's start corner to its end
+        for (std::uint64_t t = 1; t + 1 < n; ++t) {
+            if (side == 0) inner.push_back(interior(t, 1));
+            else if (side == 1) inner.push_back(interior(n - 1 - t, t));
+            else inner.push_back(interior(1, n - 1 - t));
+        }
+        const glm::dvec3 start = corner(piece, side), along = corner(piece, (side + 1) % 3) - start;
+        const auto progress = [&](std::uint32_t vertex) { return glm::dot(mesh_.vertices[vertex] - start, along); };
+        std::uint64_t i = 0;
+        std::size_t j = 0;
+        while (i < outerCount || j + 1 < inner.size()) {
+            const bool outerNext = j + 1 >= inner.size() ||
+                                   (i < outerCount && progress(onEdge(piece, side, i + 1)) <= progress(inner[j + 1]));
+            if (outerNext) {
+                addPatch(piece, {inner[j], onEdge(piece, side, i), onEdge(piece, side, i + 1)});
+                ++i;
+            } else {
+                addPatch(piece, {inner[j], onEdge(piece, side, i), inner[j + 1]});
+                ++j;
+            }
+        }
     }
 
     const SurfacePlan& plan_;

@@ -2,8 +2,10 @@
 // The mesher emits each quad piece as an nu x nv grid, row by row, neighbours sharing corner
 // vertices; the grids are recovered here from those shared vertices alone, so nothing but the
 // PatchMesh is needed. On a planar quad the grid lines are straight, so a block of the grid is
-// exactly the convex quad of its four outer corners. Triangle pieces are barycentric lattices;
-// there coarse parallelograms and triangles bounded by lattice lines are again exact unions.
+// exactly the convex quad of its four outer corners. Triangle pieces with equal edge counts are
+// barycentric lattices, and so is the core of one with unequal counts (its band to the edges and a
+// zipped small triangle are lone patches here); in a lattice, coarse parallelograms and triangles
+// bounded by lattice lines are again exact unions.
 #include "radiometry/solver/ProgressiveShooters.h"
 
 #include <algorithm>

@@ -1,0 +1,168 @@
+#!/usr/bin/env python3
+"""Writes the finely tessellated scenes of issue #20 item 5 (patch counts must follow the requested
+patch area, not the triangles) into tests/data/grouping/:
+
+- rounded_cube_room.gltf: a rounded cube as a subdivided, bevelled Blender cube exports: the
+  superellipsoid x^4 + y^4 + z^4 = 1 (2 m across), every side a 16 x 16 grid of quads split into
+  triangles, the grid lines crowding towards the edges as a bevel's do (3,072 triangles from 6e-5
+  to 0.019 m^2, mean 0.0057), reflectance 0.5, floating 0.2 m above the floor of a closed 3 m cube
+  room (walls facing inward, reflectance 0.5) lit by a 0.6 m square ceiling lamp 1 cm below the
+  ceiling (50 W/m^2, black).
+- furnace_sphere.gltf: the inside of a closed UV sphere (radius 1 m, 32 segments x 16 rings,
+  triangles facing inward, tiny ones at the poles and large ones at the equator) that emits
+  1 W/m^2 and reflects 0.5: the furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
+
+Materials are single-sided with exact SI values in extras.radiant. Read by
+tests/unit/test_meshing_tessellated.cpp.
+    python3 tests/data/make_grouping_scenes.py
+"""
+import base64
+import json
+import math
+import os
+import struct
+
+HERE = os.path.join(os.path.dirname(os.path.abspath(__file__)), "grouping")
+GRID = 16  # quads along each side of the rounded cube's faces
+
+
+def rounded_cube(half, lift):
+    """Positions and counter-clockwise (seen from outside) triangles of the superellipsoid
+    |x|^4 + |y|^4 + |z|^4 = half^4 over a GRID x GRID grid on each side, lifted by `lift` in y."""
+    positions, index = [], {}
+
+    def vertex(p):
+        key = tuple(round(c * 1e6) for c in p)  # grid points shared by two or three sides
+        if key not in index:
+            norm = sum(c ** 4 for c in p) ** 0.25
+            x, y, z = (half * c / norm for c in p)
+            index[key] = len(positions)
+            positions.append((x, y + lift, z))
+        return index[key]
+
+    def graded(i):  # grid lines crowd towards the edges, as a bevel's segments do
+        return math.sin(math.pi / 2 * (-1 + 2 * i / GRID))
+
+    triangles = []
+    for axis in range(3):
+        for sign in (-1.0, 1.0):
+            u_axis, v_axis = (axis + 1) % 3, (axis + 2) % 3
+            if sign < 0:
+                u_axis, v_axis = v_axis, u_axis  # keep the winding counter-clockwise from outside
+
+            def point(i, j):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = sign
+                p[u_axis] = graded(i)
+                p[v_axis] = graded(j)
+                return vertex(p)
+
+            for i in range(GRID):
+                for j in range(GRID):
+                    a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
+                    triangles += [(a, b, c), (a, c, d)]
+    return positions, triangles
+
+
+def uv_sphere(radius, segments, rings, inward):
+    positions = [(0.0, radius, 0.0)]
+    for ring in range(1, rings):
+        polar = math.pi * ring / rings
+        for seg in range(segments):
+            azimuth = 2 * math.pi * seg / segments
+            positions.append((radius * math.sin(polar) * math.cos(azimuth), radius * math.cos(polar),
+                              -radius * math.sin(polar) * math.sin(azimuth)))
+    positions.append((0.0, -radius, 0.0))
+    south = len(positions) - 1
+
+    def at(ring, seg):
+        return 1 + (ring - 1) * segments + seg % segments
+
+    triangles = []
+    for seg in range(segments):
+        triangles.append((0, at(1, seg), at(1, seg + 1)))
+        triangles.append((south, at(rings - 1, seg + 1), at(rings - 1, seg)))
+    for ring in range(1, rings - 1):
+        for seg in range(segments):
+            a, b = at(ring, seg), at(ring, seg + 1)
+            c, d = at(ring + 1, seg + 1), at(ring + 1, seg)
+            triangles += [(a, d, c), (a, c, b)]
+    if inward:
+        triangles = [(a, c, b) for a, b, c in triangles]
+    return positions, triangles
+
+
+def room_quads(width, height, depth):
+    """The six walls of [-w/2, w/2] x [0, h] x [-d/2, d/2], counter-clockwise seen from inside."""
+    x0, x1, y0, y1, z0, z1 = -width / 2, width / 2, 0.0, height, -depth / 2, depth / 2
+    outward = {
+        "floor": [(x0, y0, z0), (x1, y0, z0), (x1, y0, z1), (x0, y0, z1)],
+        "ceiling": [(x0, y1, z0), (x0, y1, z1), (x1, y1, z1), (x1, y1, z0)],
+        "wall west": [(x0, y0, z0), (x0, y0, z1), (x0, y1, z1), (x0, y1, z0)],
+        "wall east": [(x1, y0, z0), (x1, y1, z0), (x1, y1, z1), (x1, y0, z1)],
+        "wall north": [(x0, y0, z0), (x0, y1, z0), (x1, y1, z0), (x1, y0, z0)],
+        "wall south": [(x0, y0, z1), (x1, y0, z1), (x1, y1, z1), (x0, y1, z1)],
+    }
+    return [(name, list(reversed(quad))) for name, quad in outward.items()]
+
+
+def material(name, rho, exitance=None):
+    radiant = {"reflectance": [rho] * 3}
+    if exitance:
+        radiant["exitance_W_m2"] = [exitance] * 3
+    return {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [rho] * 3 + [1]}, "extras": {"radiant": radiant}}
+
+
+def write(path, scene_name, surfaces, materials):
+    """surfaces: (name, material index, positions, triangles)."""
+    raw = b""
+    accessors, views, meshes, nodes = [], [], [], []
+    for name, mat, points, tris in surfaces:
+        flat = [c for p in points for c in p]
+        data = struct.pack("<%df" % len(flat), *flat)
+        views.append({"buffer": 0, "byteOffset": len(raw), "byteLength": len(data)})
+        accessors.append({"bufferView": len(views) - 1, "componentType": 5126, "count": len(points), "type": "VEC3",
+                          "min": [min(p[k] for p in points) for k in range(3)],
+                          "max": [max(p[k] for p in points) for k in range(3)]})
+        raw += data
+        indices = [i for t in tris for i in t]
+        data = struct.pack("<%dI" % len(indices), *indices)
+        views.append({"buffer": 0, "byteOffset": len(raw), "byteLength": len(data)})
+        accessors.append({"bufferView": len(views) - 1, "componentType": 5125, "count": len(indices), "type": "SCALAR"})
+        raw += data
+        meshes.append({"name": name, "primitives": [{"attributes": {"POSITION": len(accessors) - 2},
+                                                      "indices": len(accessors) - 1, "material": mat}]})
+        nodes.append({"name": name, "mesh": len(meshes) - 1})
+    gltf = {
+        "asset": {"version": "2.0", "generator": "tests/data/make_grouping_scenes.py"},
+        "scene": 0,
+        "scenes": [{"name": scene_name, "nodes": list(range(len(nodes)))}],
+        "nodes": nodes,
+        "meshes": meshes,
+        "materials": materials,
+        "accessors": accessors,
+        "bufferViews": views,
+        "buffers": [{"byteLength": len(raw), "uri": "data:application/octet-stream;base64," + base64.b64encode(raw).decode()}],
+    }
+    os.makedirs(HERE, exist_ok=True)
+    with open(os.path.join(HERE, path), "w") as f:
+        json.dump(gltf, f, indent=1)
+        f.write("\n")
+
+
+def main():
+    surfaces = [(name, 0, quad, [(0, 1, 2), (0, 2, 3)]) for name, quad in room_quads(3.0, 3.0, 3.0)]
+    s, y = 0.3, 3.0 - 0.01
+    surfaces.append(("ceiling lamp", 1, [(-s, y, -s), (s, y, -s), (s, y, s), (-s, y, s)], [(0, 1, 2), (0, 2, 3)]))
+    positions, triangles = rounded_cube(1.0, 1.2)
+    surfaces.append(("rounded cube", 2, positions, triangles))
+    write("rounded_cube_room.gltf", "rounded cube room", surfaces,
+          [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey cube", 0.5)])
+
+    positions, triangles = uv_sphere(1.0, 32, 16, inward=True)
+    write("furnace_sphere.gltf", "furnace sphere", [("sphere inside", 0, positions, triangles)],
+          [material("glowing grey", 0.5, 1.0)])
+
+
+if __name__ == "__main__":
+    main()
