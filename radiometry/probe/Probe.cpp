@@ -227,6 +227,8 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
         const Rgb& b = radiosity[j];
         if (b.x == 0 && b.y == 0 && b.z == 0) continue;
         const PatchPolygon polygon = mesh_.polygon(j);
+        // Nor does a patch whose plane holds x (a double-sided face's twin under x): x sees it edge-on.
+        if (!inFrontOfPlane(polygon, at.point)) continue;
         const double f = pointToPolygonFormFactor(at.point, up, polygon.corners());
         if (f <= 0) continue;
         double visible = 1;

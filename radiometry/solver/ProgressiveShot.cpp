@@ -223,9 +223,13 @@ private:
 /// With memberWeight, a ray to member k counts memberWeight[k] (its unoccluded kernel per unit
 /// power): the targets follow the power, the light arriving also follows the kernel, so members
 /// below the receiver's horizon (floor beyond a block's corner, seen from its side; the rays run
-/// into the block) and far members weigh what they send, not what they hold.
-double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver, int rays,
-                            std::uint64_t seed, std::span<const double> memberWeight) {
+/// into the block) and far members weigh what they send, not what they hold. A ray joining points
+/// behind either's plane carries nothing and is not counted: from a patch's back it leaves through
+/// the patch's own face, which no ray from its plane can hit (a closed double-sided sphere's inside
+/// was lit so, 0.7% of its outside).
+double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver,
+                            const glm::dvec3& shooterNormal, int rays, std::uint64_t seed,
+                            std::span<const double> memberWeight) {
     const auto count = static_cast<std::uint64_t>(targets.points.size());
     const auto n = static_cast<std::uint64_t>(rays);
     const std::uint64_t spacing = std::max<std::uint64_t>(1, count / n);
@@ -239,6 +243,8 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
         const glm::dvec3 from = origins.next();
         const double weight = memberWeight.empty() ? 1.0 : memberWeight[targets.member[t]];
         if (weight <= 0) continue;
+        const glm::dvec3 d = targets.points[t] - from;
+        if (glm::dot(g.polygons[receiver].normal, d) <= 0 || glm::dot(shooterNormal, d) >= 0) continue;
         total += weight;
         if (!g.rays->occluded(from, targets.points[t])) unblocked += weight;
     }
@@ -257,10 +263,11 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
 double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
                       int fewRays, int penumbraRays, std::span<const double> memberWeight) {
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
-    const double first = stratifiedVisibility(g, targets, receiver, fewRays, seed, memberWeight);
+    const glm::dvec3& shooterNormal = g.shooters[shooter].normal;
+    const double first = stratifiedVisibility(g, targets, receiver, shooterNormal, fewRays, seed, memberWeight);
     if (first == 0.0 || first == 1.0 || fewRays < g.options.visibilityRays || penumbraRays <= fewRays) return first;
     const double second =
-        stratifiedVisibility(g, targets, receiver, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight);
+        stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight);
     return (first * fewRays + second * penumbraRays) / (fewRays + penumbraRays);
 }
 
