@@ -92,10 +92,14 @@ int runProbe(const ProbeCommandOptions& options) {
     std::vector<std::string> warnings = scene.warnings;
     glm::dvec3 onSurface = point;
     if (const std::optional<SurfaceSnap> snap = probe.snapOntoSurface(point, kSnapDistance)) {
-        char distance[32];
+        char distance[32], chordError[32];
         std::snprintf(distance, sizeof distance, "%.3g", snap->distance);
+        std::snprintf(chordError, sizeof chordError, "%.3g", snap->chordError);
+        const std::string curved = snap->chordError > 0 ? std::string(", within the chord error of its tessellation (") +
+                                                              chordError + " m: the smooth surface its facets stand for)"
+                                                        : std::string();
         const std::string warning = "--point: (" + roundTripVector(point) + ") lies " + distance + " m off '" +
-                                    scene.surfaces[snap->surface].name + "'; moved onto it, to (" +
+                                    scene.surfaces[snap->surface].name + "'" + curved + "; moved onto it, to (" +
                                     roundTripVector(snap->point) + ")";
         std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
         warnings.push_back(warning);

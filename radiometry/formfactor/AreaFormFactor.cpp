@@ -278,11 +278,12 @@ double unoccludedFormFactor(const PatchPolygon& from, const PatchPolygon& to, do
     const double radiusFrom = circumradius(from);
     const double radiusTo = circumradius(to);
     // Nothing of `to` above `from`'s plane, or nothing of `from` in front of `to`: no exchange.
-    // This also settles coplanar neighbours exactly.
-    const double planeTolerance = 1e-9 * (radiusFrom + radiusTo);
-    if (maxHeightAbove(to, from.centroid, from.normal) <= planeTolerance ||
-        maxHeightAbove(from, to.centroid, to.normal) <= planeTolerance)
+    // This also settles coplanar neighbours exactly, and a double-sided face's twins, which lie in
+    // each other's plane only to the faces' planarity.
+    const double inPlane = planarityTolerance(from, to);
+    if (maxHeightAbove(to, from.centroid, from.normal) <= inPlane || maxHeightAbove(from, to.centroid, to.normal) <= inPlane)
         return 0.0;
+    const double planeTolerance = 1e-9 * (radiusFrom + radiusTo);
 
     std::array<Piece, 2> pieces;
     const std::size_t pieceCount = frontPieces(from, to, planeTolerance, pieces);

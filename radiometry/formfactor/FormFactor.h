@@ -33,7 +33,8 @@ double formFactor(const PatchPolygon& from, const PatchPolygon& to, const RayCas
 double unoccludedFormFactor(const PatchPolygon& from, const PatchPolygon& to, double accuracy = 1e-3);
 
 /// Fraction of the segments between `from` and `to` that are unblocked, from options.visibilityRays
-/// stratified sample pairs (1 when rays is null or visibilityRays is 0).
+/// stratified sample pairs on the parts of each in front of the other's plane, the parts that
+/// exchange light (1 when rays is null, visibilityRays is 0 or the two do not face each other).
 double visibilityFraction(const PatchPolygon& from, const PatchPolygon& to, const RayCaster* rays,
                           const FormFactorOptions& options = {});
 

@@ -14,6 +14,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/probe/ChordError.h"
 #include "radiometry/probe/PolygonSamples.h"
 #include "radiometry/probe/RadiosityInterpolation.h"
 #include "radiometry/solidangle/PolygonSolidAngle.h"
@@ -135,16 +136,27 @@ Probe::Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, c
 
 std::optional<SurfaceSnap> Probe::snapOntoSurface(const glm::dvec3& x, double maxDistance) const {
     const double tolerance = options_.onSurfaceTolerance * sceneSize_;
-    std::optional<SurfaceSnap> nearest;
-    for (std::uint32_t s = 0; s < scene_.surfaces.size(); ++s) {
-        for (const Face& face : scene_.surfaces[s].faces) {
+    for (const Surface& surface : scene_.surfaces)
+        for (const Face& face : surface.faces) {
             if (face.vertices.size() < 3) continue;
             const double height = glm::dot(face.normal, x - face.vertices[0]);
             if (std::abs(height) <= tolerance && std::max(0.0, distanceOutsideFace(face, x)) <= tolerance)
                 return std::nullopt;  // locate takes it as it is
-            const glm::dvec3 p = nearestOnFace(face, x);
+        }
+    // Off every face: a curved surface's facet takes a point within its chord error (plus the
+    // on-surface tolerance), whatever maxDistance, for the smooth surface lies that far off it.
+    const std::vector<std::vector<double>> chordErrors = tessellationChordErrors(scene_);
+    std::optional<SurfaceSnap> nearest;
+    for (std::uint32_t s = 0; s < scene_.surfaces.size(); ++s) {
+        const std::vector<Face>& faces = scene_.surfaces[s].faces;
+        for (std::size_t f = 0; f < faces.size(); ++f) {
+            if (faces[f].vertices.size() < 3) continue;
+            const glm::dvec3 p = nearestOnFace(faces[f], x);
             const double distance = glm::length(p - x);
-            if (distance <= maxDistance && (!nearest || distance < nearest->distance)) nearest = SurfaceSnap{p, distance, s};
+            const double chordError = chordErrors[s][f];
+            const bool curved = distance > maxDistance && distance <= chordError + tolerance;
+            if ((distance <= maxDistance || curved) && (!nearest || distance < nearest->distance))
+                nearest = SurfaceSnap{p, distance, s, curved ? chordError : 0.0};
         }
     }
     return nearest;
@@ -227,6 +239,8 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
         const Rgb& b = radiosity[j];
         if (b.x == 0 && b.y == 0 && b.z == 0) continue;
         const PatchPolygon polygon = mesh_.polygon(j);
+        // Nor does a patch whose plane holds x (a double-sided face's twin under x): x sees it edge-on.
+        if (!inFrontOfPlane(polygon, at.point)) continue;
         const double f = pointToPolygonFormFactor(at.point, up, polygon.corners());
         if (f <= 0) continue;
         double visible = 1;

@@ -55,6 +55,10 @@ struct SurfaceSnap {
     glm::dvec3 point{0.0};   ///< on the face
     double distance = 0;     ///< m, how far it moved
     std::uint32_t surface = 0;
+    /// m: when the point lay farther than the caller's maxDistance from the face but within this,
+    /// the face's chord error (ChordError.h), so on the smooth surface a curved tessellation stands
+    /// for; 0 when maxDistance took it.
+    double chordError = 0;
 };
 
 struct TargetReading {
@@ -93,9 +97,11 @@ public:
     [[nodiscard]] SurfacePoint locate(const glm::dvec3& x, const glm::dvec3& n) const;
 
     /// For a point off every surface (beyond locate's tolerance) but within `maxDistance` (m) of a
-    /// face: the nearest point of the nearest face, which locate accepts. nullopt when x already lies
-    /// on a surface, or lies farther than maxDistance from every face. A point typed with a few
-    /// digits too few (a copied reading) is meant, not one a millimetre away in mid-air.
+    /// face, or within a curved surface's chord error of one of its facets: the nearest point of the
+    /// nearest such face (x moved along the face's normal where it lies over the face), which locate
+    /// accepts. nullopt when x already lies on a surface, or lies farther than both from every face.
+    /// A point typed with a few digits too few (a copied reading) is meant, and so is a point on the
+    /// smooth sphere a tessellated one stands for, but not one a millimetre away in mid-air.
     [[nodiscard]] std::optional<SurfaceSnap> snapOntoSurface(const glm::dvec3& x, double maxDistance) const;
 
     /// Every reading at x with normal n; `radiosity` is the solver's per-patch solution (W/m^2).

@@ -14,9 +14,9 @@ namespace radiant {
 
 namespace {
 
-/// Every corner of `polygon` on or behind the plane of `plane`, within a tolerance scaled by size.
+/// Every corner of `polygon` on or behind the plane of `plane`, within the pair's planarity.
 bool whollyBehind(const PatchPolygon& polygon, const PatchPolygon& plane) {
-    const double tolerance = 1e-9 * std::sqrt(std::max(plane.area, polygon.area)) + 1e-12;
+    const double tolerance = planarityTolerance(polygon, plane);
     for (const glm::dvec3& corner : polygon.corners())
         if (glm::dot(plane.normal, corner - plane.centroid) > tolerance) return false;
     return true;

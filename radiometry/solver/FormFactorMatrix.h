@@ -59,7 +59,8 @@ private:
 };
 
 /// True when no light can pass between the two patches: one lies wholly behind the other's plane
-/// (which includes coplanar patches). Cheap, exact, and done before any ray.
+/// (which includes coplanar patches, a double-sided face's twins among them, to the pair's
+/// planarityTolerance). Cheap, exact, and done before any ray.
 bool cannotSeeEachOther(const PatchPolygon& a, const PatchPolygon& b);
 
 } // namespace radiant

@@ -270,7 +270,7 @@ inline double meanKernel(const PatchPolygon& p, const PatchPolygon& q) {
 /// True when some of each element lies strictly in front of the other: otherwise no light passes.
 inline bool facing(const PatchPolygon& a, const PatchPolygon& b) {
     const auto someInFront = [](const PatchPolygon& of, const PatchPolygon& plane) {
-        const double tolerance = 1e-9 * std::sqrt(plane.area + of.area);
+        const double tolerance = planarityTolerance(of, plane);  // a double-sided face's twins never link
         for (const glm::dvec3& v : of.corners())
             if (glm::dot(plane.normal, v - plane.centroid) > tolerance) return true;
         return false;

@@ -223,9 +223,14 @@ private:
 /// With memberWeight, a ray to member k counts memberWeight[k] (its unoccluded kernel per unit
 /// power): the targets follow the power, the light arriving also follows the kernel, so members
 /// below the receiver's horizon (floor beyond a block's corner, seen from its side; the rays run
-/// into the block) and far members weigh what they send, not what they hold.
-double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver, int rays,
-                            std::uint64_t seed, std::span<const double> memberWeight) {
+/// into the block) and far members weigh what they send, not what they hold. A ray joining points
+/// behind either's plane carries nothing and is not counted: from a patch's back it leaves through
+/// the patch's own face, which no ray from its plane can hit (a closed double-sided sphere's inside
+/// was lit so, 0.75% of its outside; 0.15% left, from pairs where no ray of the many faces). Returns
+/// -1 when no ray joined facing parts, with the plain fraction of all rays in `plain`.
+double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver,
+                            const glm::dvec3& shooterNormal, int rays, std::uint64_t seed,
+                            std::span<const double> memberWeight, double& plain) {
     const auto count = static_cast<std::uint64_t>(targets.points.size());
     const auto n = static_cast<std::uint64_t>(rays);
     const std::uint64_t spacing = std::max<std::uint64_t>(1, count / n);
@@ -233,16 +238,22 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
     std::uint64_t stride = 1 + mix64(seed + 2) % n;
     while (std::gcd(stride, n) != 1) ++stride;
     StratifiedOrigins origins(g.polygons[receiver], rays, mix64(seed + 3));
-    double unblocked = 0, total = 0;
+    double unblocked = 0, total = 0, unblockedBehind = 0, totalBehind = 0;
     for (std::uint64_t k = 0; k < n; ++k) {
         const std::uint64_t t = (first + ((stride * k) % n) * spacing) % count;
         const glm::dvec3 from = origins.next();
         const double weight = memberWeight.empty() ? 1.0 : memberWeight[targets.member[t]];
         if (weight <= 0) continue;
-        total += weight;
-        if (!g.rays->occluded(from, targets.points[t])) unblocked += weight;
+        const glm::dvec3 d = targets.points[t] - from;
+        const bool facing = glm::dot(g.polygons[receiver].normal, d) > 0 && glm::dot(shooterNormal, d) < 0;
+        const bool through = !g.rays->occluded(from, targets.points[t]);
+        (facing ? total : totalBehind) += weight;
+        if (through) (facing ? unblocked : unblockedBehind) += weight;
     }
-    return total > 0 ? unblocked / total : 0.0;
+    if (total > 0) return unblocked / total;
+    // No ray joined parts in front of each other (a sliver of the pair): -1, with the plain fraction.
+    plain = totalBehind > 0 ? unblockedBehind / totalBehind : 0.0;
+    return -1;
 }
 
 /// Area-to-area visibility between the receiver and the shot's targets, adaptively: a few
@@ -257,10 +268,21 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
 double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
                       int fewRays, int penumbraRays, std::span<const double> memberWeight) {
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
-    const double first = stratifiedVisibility(g, targets, receiver, fewRays, seed, memberWeight);
-    if (first == 0.0 || first == 1.0 || fewRays < g.options.visibilityRays || penumbraRays <= fewRays) return first;
-    const double second =
-        stratifiedVisibility(g, targets, receiver, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight);
+    const glm::dvec3& shooterNormal = g.shooters[shooter].normal;
+    double plain = 0;
+    const double first = stratifiedVisibility(g, targets, receiver, shooterNormal, fewRays, seed, memberWeight, plain);
+    const bool more = penumbraRays > fewRays;
+    if (first < 0) {  // none of the few rays weighed: the many find the facing parts, else the plain fraction
+        if (!more) return plain;
+        const double again =
+            stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, plain);
+        return again >= 0 ? again : plain;
+    }
+    if (first == 0.0 || first == 1.0 || fewRays < g.options.visibilityRays || !more) return first;
+    double unused = 0;
+    double second =
+        stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, unused);
+    if (second < 0) second = first;
     return (first * fewRays + second * penumbraRays) / (fewRays + penumbraRays);
 }
 

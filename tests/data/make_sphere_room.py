@@ -6,6 +6,9 @@ ceiling lamp 1 cm below the ceiling (50 W/m^2, black). Materials are single-side
 values in extras.radiant, so Gauss-Seidel, hierarchical radiosity and the path tracer solve the same
 scene. Issue #20 item 6: hierarchical radiosity lost ~20% on such curved objects. Read by
 tests/unit/test_hierarchical_curved.cpp; app/bench/HierarchicalAccuracy.cpp builds the same scene in code.
+Also writes curved/sphere_room_double_sided.gltf, the same scene with the sphere's material
+"doubleSided": true (Blender's default): its outside must light as the single-sided sphere's, its
+inside, a closed cavity, must stay black (tests/unit/test_double_sided.cpp).
     python3 tests/data/make_sphere_room.py
 """
 import base64
@@ -14,7 +17,7 @@ import math
 import os
 import struct
 
-OUT = os.path.join(os.path.dirname(os.path.abspath(__file__)), "curved", "sphere_room.gltf")
+FOLDER = os.path.join(os.path.dirname(os.path.abspath(__file__)), "curved")
 
 SIZE = 2.0                    # room edge (m), floor at y = 0, x and z in [-1, 1]
 RADIUS = 0.5                  # sphere (m)
@@ -66,7 +69,7 @@ def room_quads():
     return [(name, list(reversed(quad))) for name, quad in outward.items()]
 
 
-def main():
+def write(file_name, sphere_double_sided):
     surfaces = []  # (name, material, positions, triangles)
     for name, quad in room_quads():
         surfaces.append((name, 0, quad, [(0, 1, 2), (0, 2, 3)]))
@@ -95,11 +98,14 @@ def main():
                                                       "indices": len(accessors) - 1, "material": material}]})
         nodes.append({"name": name, "mesh": len(meshes) - 1})
 
-    def material(name, rho, exitance=None):
+    def material(name, rho, exitance=None, double_sided=False):
         radiant = {"reflectance": [rho] * 3}
         if exitance:
             radiant["exitance_W_m2"] = [exitance] * 3
-        return {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [rho] * 3 + [1]}, "extras": {"radiant": radiant}}
+        result = {"name": name, "pbrMetallicRoughness": {"baseColorFactor": [rho] * 3 + [1]}, "extras": {"radiant": radiant}}
+        if double_sided:
+            result["doubleSided"] = True
+        return result
 
     gltf = {
         "asset": {"version": "2.0", "generator": "tests/data/make_sphere_room.py"},
@@ -107,15 +113,20 @@ def main():
         "scenes": [{"name": "sphere room", "nodes": list(range(len(nodes)))}],
         "nodes": nodes,
         "meshes": meshes,
-        "materials": [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey sphere", 0.5)],
+        "materials": [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey sphere", 0.5, double_sided=sphere_double_sided)],
         "accessors": accessors,
         "bufferViews": views,
         "buffers": [{"byteLength": len(raw), "uri": "data:application/octet-stream;base64," + base64.b64encode(raw).decode()}],
     }
-    os.makedirs(os.path.dirname(OUT), exist_ok=True)
-    with open(OUT, "w") as f:
+    os.makedirs(FOLDER, exist_ok=True)
+    with open(os.path.join(FOLDER, file_name), "w") as f:
         json.dump(gltf, f, indent=1)
         f.write("\n")
+
+
+def main():
+    write("sphere_room.gltf", False)
+    write("sphere_room_double_sided.gltf", True)
 
 
 if __name__ == "__main__":
