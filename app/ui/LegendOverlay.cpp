@@ -16,7 +16,8 @@ ImU32 colourU32(const glm::dvec3& srgb) {
 
 } // namespace
 
-LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view) {
+LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view, const char* quantity,
+                                const char* unit) {
     const float font = ImGui::GetFontSize();
     const float margin = font;
     ImGui::SetNextWindowPos({static_cast<float>(view.x + view.width) - margin, static_cast<float>(view.y) + margin},
@@ -26,8 +27,8 @@ LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     // "W/m²" with the UI font's superscript two; the quantity on its own line keeps the window narrow.
-    ImGui::TextUnformatted(render::kFalseColourQuantity);
-    ImGui::TextDisabled("W/m\xC2\xB2%s", legend.logScale ? ", log scale" : "");
+    ImGui::TextUnformatted(quantity);
+    ImGui::TextDisabled("%s%s", unit, legend.logScale ? ", log scale" : "");
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

@@ -14,6 +14,9 @@ struct LegendBarRect {
 };
 
 /// Draws the legend as an ImGui window anchored to `view` (UI units); call between newFrame and render.
-LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view);
+/// `quantity` and `unit` title it (the comparison's difference view maps a ratio, not radiosity).
+LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view,
+                                const char* quantity = render::kFalseColourQuantity,
+                                const char* unit = "W/m\xC2\xB2");
 
 } // namespace radiant::app
