@@ -26,14 +26,16 @@ std::string progressLine(const Snapshot& s) {
 }
 
 /// A label box in the top-left corner of `view` (UI units): a title in `colour`, a line under it.
-void drawLabel(const render::Viewport& view, ImU32 colour, const std::string& title, const std::string& line) {
+/// `room`: the share of the view's width it may take (the difference view's legend stands at the right).
+void drawLabel(const render::Viewport& view, ImU32 colour, const std::string& title, const std::string& line,
+               float room = 1.0f) {
     ImDrawList* draw = ImGui::GetBackgroundDrawList();
     ImFont* font = ImGui::GetFont();
     const float size = ImGui::GetFontSize();
     const float big = size * 1.25f;
     const float pad = size * 0.4f;
     const ImVec2 at{static_cast<float>(view.x) + size * 0.6f, static_cast<float>(view.y) + size * 0.6f};
-    const float maxWidth = static_cast<float>(view.width) - 2.0f * size;
+    const float maxWidth = room * static_cast<float>(view.width) - 2.0f * size;
     const ImVec2 titleSize = font->CalcTextSizeA(big, maxWidth, maxWidth, title.c_str());
     const ImVec2 lineSize = font->CalcTextSizeA(size, maxWidth, maxWidth, line.c_str());
     const float width = std::max(titleSize.x, lineSize.x);
@@ -106,6 +108,9 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     settings.logScale = true;
     settings.falseColourMaxW_m2 = kDifferenceTop;
     settings.shading = render::Shading::Flat;  // each patch's own difference, as computed
+    // Where both agree the view is one flat colour: the patch edges keep the scene's shape readable
+    // (and show what each value belongs to).
+    settings.wireframe = true;
     settings.highlightShooter = false;
     settings.showImportance = false;
     settings.showLinks = false;
@@ -159,12 +164,12 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
     const SolutionDifference& d = differencer_.current();
     char line[160];
     if (d.mesh)
-        std::snprintf(line, sizeof line, "mean %.2g%%, largest %.2g%%, on %s's mesh (%zu patches)", 100 * d.meanRelative,
+        std::snprintf(line, sizeof line, "mean %.3g%%, largest %.3g%%\non %s's mesh (%zu patches)", 100 * d.meanRelative,
                       100 * d.maxRelative, d.onFirst ? "A" : "B", d.mesh->size());
     else
         std::snprintf(line, sizeof line, "waiting for both solutions");
     drawLabel(viewInUiUnits, IM_COL32(235, 235, 235, 255), "Difference |B_A - B_B| / B",
-              labelA + "  vs  " + labelB + "\n" + line);
+              labelA + "  vs  " + labelB + "\n" + line, 0.6f);
     drawLegendOverlay(render::makeLegend(kDifferenceTop, true, render::DisplaySettings::kLogDecades), viewInUiUnits,
                       "|B_A - B_B| / B", "ratio (0.01 = 1%)");
     return true;

@@ -103,7 +103,7 @@ void SolverPanel::drawComparison() {
                           "Turning it on restarts A, so both start from B = E together.");
     if (!comparing) return;
     ComparisonSettings settings = live_.comparison();
-    const float labelWidth = ImGui::CalcTextSize("B mesh").x + ImGui::GetStyle().ItemInnerSpacing.x;
+    const float labelWidth = ImGui::CalcTextSize("B method").x + ImGui::GetStyle().ItemInnerSpacing.x;
     ImGui::SetNextItemWidth(-labelWidth);
     if (ImGui::BeginCombo("B method", methodLabel(settings.method))) {
         for (const SolverMethodInfo& method : solverMethods())
@@ -119,6 +119,9 @@ void SolverPanel::drawComparison() {
             if (ImGui::Selectable(choice.label, choice.scale == settings.patchAreaScale)) settings.patchAreaScale = choice.scale;
         ImGui::EndCombo();
     }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("B's largest patch area against A's (the Scene panel's meshing slider): one method at two\n"
+                          "meshings shows the discretisation error; the difference view maps the finer onto the coarser");
     int view = settings.view == ComparisonView::SideBySide ? 0 : 1;
     ImGui::RadioButton("Side by side", &view, 0);
     ImGui::SameLine();

@@ -31,7 +31,7 @@ struct PatchAreaChoice {
     const char* label;
 };
 inline constexpr PatchAreaChoice kPatchAreaChoices[] = {
-    {1.0, "same mesh as A"}, {0.25, "finer mesh (1/4 the patch area)"}, {4.0, "coarser mesh (4x the patch area)"}};
+    {1.0, "same as A"}, {0.25, "finer (1/4 area)"}, {4.0, "coarser (4x area)"}};
 
 /// The command B takes for `command` sent to A, or nullopt when it concerns A alone (SetMethod: B's
 /// method is its own). Meshing is scaled by settings.patchAreaScale; a focused point is moved to B's

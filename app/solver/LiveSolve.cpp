@@ -14,6 +14,10 @@ void LiveSolve::send(SolverCommand command) {
         sentTolerance_ = tolerance->tolerance;
     } else if (const auto* links = std::get_if<command::SetLinkTolerance>(&command)) {
         sentLinkTolerance_ = links->linkTolerance;
+    } else if (const auto* method = std::get_if<command::SetMethod>(&command)) {
+        sentMethod_ = method->method;
+    } else if (std::holds_alternative<command::Run>(command) || std::holds_alternative<command::Pause>(command)) {
+        runSent_ = std::holds_alternative<command::Run>(command);
     }
     if (second)
         if (std::optional<SolverCommand> forB = commandForSecond(command, comparison_, secondCurrent->meshGeneration))
@@ -39,6 +43,10 @@ void LiveSolve::compare(bool on) {
     // The newest state, not this frame's: the lab may turn it on before its first frame took one.
     const std::shared_ptr<const Snapshot> newest = thread.snapshot();
     const Snapshot& a = *newest;
+    // B the same as A would show nothing: the lecture's pair instead (Jacobi against Gauss-Seidel).
+    const SolverMethod methodA = sentMethod_.value_or(a.method);
+    if (comparison_.method == methodA && comparison_.patchAreaScale == 1.0)
+        comparison_.method = methodA == SolverMethod::GaussSeidel ? SolverMethod::Jacobi : SolverMethod::GaussSeidel;
     second = std::make_unique<SolverThread>();
     secondCurrent = second->snapshot();
     SolverThread& b = *second;
@@ -53,7 +61,8 @@ void LiveSolve::compare(bool on) {
     meshing.maxPatchArea *= comparison_.patchAreaScale;
     if (scene) b.send(command::LoadScene{scene, meshing});
     thread.send(command::Reset{});
-    if (a.running) {
+    // A lab that was told to run (and has perhaps converged since) races the two from B = E.
+    if (a.running || runSent_) {
         thread.send(command::Run{});
         b.send(command::Run{});
     }
@@ -69,6 +78,9 @@ void LiveSolve::setComparison(const ComparisonSettings& settings) {
         meshing.maxPatchArea *= settings.patchAreaScale;
         second->send(command::Remesh{meshing});
     }
+    // A new method or mesh stops B where A may be running: a race started goes on.
+    if ((settings.method != before.method || settings.patchAreaScale != before.patchAreaScale) && runSent_)
+        second->send(command::Run{});
 }
 
 } // namespace radiant::app

@@ -29,7 +29,9 @@ struct LiveSolve {
     [[nodiscard]] bool running() const { return current->running || (secondCurrent && secondCurrent->running); }
 
     /// Starts the second solver on the first's scene (as edited), both from B = E (the first is
-    /// reset, so their curves start together), running when the first was; or stops and drops it.
+    /// reset, so their curves start together), running when the first was told to run; or stops and
+    /// drops it. B's method, when it is A's on the same mesh, becomes A's partner in the lecture
+    /// (Jacobi for Gauss-Seidel, Gauss-Seidel for any other).
     void compare(bool on);
     [[nodiscard]] bool comparing() const { return second != nullptr; }
     /// B's method and meshing (sent to the second solver when they change) and the view.
@@ -47,6 +49,8 @@ private:
     std::shared_ptr<const Scene> sentScene_;
     std::optional<MeshingOptions> sentMeshing_;
     std::optional<double> sentTolerance_, sentLinkTolerance_;
+    std::optional<SolverMethod> sentMethod_;
+    bool runSent_ = false;  ///< the last of Run and Pause sent was Run
 };
 
 } // namespace radiant::app

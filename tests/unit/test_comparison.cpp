@@ -111,6 +111,22 @@ TEST_CASE("Jacobi and Gauss-Seidel on two threads, B on a mesh twice as fine, bo
     CHECK_FALSE(live.secondCurrent);
 }
 
+TEST_CASE("turned on with B the same as A, B becomes A's partner in the lecture: Jacobi against Gauss-Seidel") {
+    SolverThread first;
+    LiveSolve live(first);
+    live.send(command::SetMethod{SolverMethod::GaussSeidel});
+    live.compare(true);  // the default B is Gauss-Seidel too
+    CHECK(live.comparison().method == SolverMethod::Jacobi);
+    live.compare(false);
+    live.send(command::SetMethod{SolverMethod::Hierarchical});
+    ComparisonSettings settings;
+    settings.method = SolverMethod::Hierarchical;
+    settings.patchAreaScale = 0.25;  // one method at two meshings: kept
+    live.setComparison(settings);
+    live.compare(true);
+    CHECK(live.comparison().method == SolverMethod::Hierarchical);
+}
+
 TEST_CASE("each patch of the finer mesh corresponds to the coarser patch containing its centre") {
     const Scene box = loadScene("cornell-box").scene;
     const PatchMesh coarse = meshScene(box, {0.04});
