@@ -162,12 +162,13 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
         return false;
     }
     const SolutionDifference& d = differencer_.current();
-    char line[160];
+    char line[320];
     if (d.mesh)
         std::snprintf(line, sizeof line, "mean %.3g%%, largest %.3g%%\non %s's mesh (%zu patches)", 100 * d.meanRelative,
                       100 * d.maxRelative, d.onFirst ? "A" : "B", d.mesh->size());
     else
-        std::snprintf(line, sizeof line, "waiting for both solutions");
+        std::snprintf(line, sizeof line, "waiting for both to step (A: %s; B: %s)", progressLine(a).c_str(),
+                      progressLine(b).c_str());
     drawLabel(viewInUiUnits, IM_COL32(235, 235, 235, 255), "Difference |B_A - B_B| / B",
               labelA + "  vs  " + labelB + "\n" + line, 0.6f);
     drawLegendOverlay(render::makeLegend(kDifferenceTop, true, render::DisplaySettings::kLogDecades), viewInUiUnits,

@@ -45,8 +45,11 @@ const SolutionDifference& SolutionDifferencer::update(const Snapshot& a, const S
     if (a.generation == generationA_ && b.generation == generationB_) return difference_;
     generationA_ = a.generation;
     generationB_ = b.generation;
+    // Before its first step a side shows its emission alone (while its form factors compute, say):
+    // no solution to set against the other's yet.
     const bool ready = a.mesh && b.mesh && a.scene && a.radiosity.size() == a.mesh->size() &&
-                       b.radiosity.size() == b.mesh->size() && !a.radiosity.empty() && !b.radiosity.empty();
+                       b.radiosity.size() == b.mesh->size() && !a.radiosity.empty() && !b.radiosity.empty() &&
+                       !a.history.empty() && !b.history.empty();
     if (!ready) {
         difference_.mesh.reset();
         difference_.relative.clear();

@@ -30,7 +30,7 @@ class SolutionDifferencer {
 public:
     /// The difference of the two snapshots' solutions, recomputed only when either's generation
     /// changed (the patch correspondence only when either mesh did). Empty (mesh null) while either
-    /// has no mesh or no solution.
+    /// has no mesh or has not stepped yet.
     const SolutionDifference& update(const Snapshot& a, const Snapshot& b);
     [[nodiscard]] const SolutionDifference& current() const { return difference_; }
 
