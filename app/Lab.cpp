@@ -258,6 +258,7 @@ struct Lab::State {
         const Snapshot& shown = live.snapshot();
         if (shown.running || solverThread.activity() != SolverActivity::Idle) return true;
         if (solverThread.snapshot()->generation != shown.generation) return true;
+        if (live.secondChanging()) return true;  // comparison mode: B still solving, or newer
         if (sidebar.busy() || screenshotRequested) return true;
         return glfwGetTime() - lastInput < kAwakeAfterInput;
     }

@@ -34,6 +34,11 @@ struct LiveSolve {
     /// (Jacobi for Gauss-Seidel, Gauss-Seidel for any other).
     void compare(bool on);
     [[nodiscard]] bool comparing() const { return second != nullptr; }
+    /// Comparison mode: B is running, building, or has published a snapshot newer than this frame's.
+    [[nodiscard]] bool secondChanging() const {
+        return second && (secondCurrent->running || second->activity() != SolverActivity::Idle ||
+                          second->snapshot()->generation != secondCurrent->generation);
+    }
     /// B's method and meshing (sent to the second solver when they change) and the view.
     void setComparison(const ComparisonSettings& settings);
     [[nodiscard]] const ComparisonSettings& comparison() const { return comparison_; }
