@@ -14,6 +14,7 @@
 #include "app/panels/HemicubeSession.h"
 #include "app/panels/HemispherePanel.h"
 #include "app/lessons/Lesson.h"
+#include "app/LabComparison.h"
 #include "app/LabLessonStage.h"
 #include "app/LabScene.h"
 #include "app/lessons/LessonCaption.h"
@@ -32,6 +33,7 @@
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/LegendOverlay.h"
+#include "app/ui/ProbeMarker.h"
 #include "app/ui/Shortcuts.h"
 #include "app/ui/Sidebar.h"
 #include "app/ui/StatusBar.h"
@@ -45,7 +47,6 @@
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
-#include "render/overlay/DepthVisibility.h"
 #include "render/camera/OrbitCamera.h"
 
 namespace radiant::app {
@@ -94,6 +95,7 @@ struct Lab::State {
         });
         ui.emplace(window.handle(), options.uiScale);
         patches.emplace();
+        comparison.emplace(live);
 
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
         scenePanel = scene.get();
@@ -138,17 +140,18 @@ struct Lab::State {
     }
 
     ~State() {
-        patches.reset();  // GL objects die while their context is alive
+        comparison->release();  // GL objects die while their context is alive
+        patches.reset();
         ui.reset();
     }
 
     void onAction(LabAction action) {
-        const Snapshot& s = live.snapshot();
         switch (action) {
         case LabAction::Quit: window.requestClose(); break;
         case LabAction::RunPause:
-            live.send(s.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
+            live.send(live.running() ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
             break;
+        case LabAction::Compare: comparison->cycle(); break;
         case LabAction::Step: live.send(command::Step{1}); break;
         case LabAction::Reset: live.send(command::Reset{}); break;
         case LabAction::Rekey: DisplayPanel::rekey(display); break;
@@ -198,6 +201,7 @@ struct Lab::State {
         patches->setLinks(s.linkSegments);
         patches->setFocusLinks(s.focusLinkSegments);
         patches->setImportance(s.importance);
+        comparison->stream(display, *patches);
         if (s.scene->name != sceneShown) {
             // The home view casts with the scene's one ray caster, which the solver thread builds
             // (the window's first frames used the outside framing meanwhile).
@@ -240,29 +244,11 @@ struct Lab::State {
         return line;
     }
 
-    void drawProbeMarker(int framebufferHeight) const {
-        const std::optional<ProbePick>& pick = probePanel->picked();
-        if (!pick) return;
-        const glm::dvec3 p = render::projectToPixel(lastCamera, viewport, pick->point);
-        if (p.z <= 0 || p.z >= 1) return;
-        // Behind a block, the picked point is not there to see.
-        if (!render::visibleInDepthBuffer(lastCamera, viewport, framebufferHeight, pick->point)) return;
-        const float ratio = window.pixelRatio();
-        const ImVec2 centre{static_cast<float>(p.x) / ratio, static_cast<float>(p.y) / ratio};
-        const float r = ImGui::GetFontSize() * 0.45f;
-        ImDrawList* draw = ImGui::GetBackgroundDrawList();
-        // Dark under light: readable on the white walls and on the black shadows alike.
-        for (const auto& [colour, thickness] : {std::pair{IM_COL32(0, 0, 0, 200), 4.0f}, std::pair{IM_COL32(255, 230, 80, 255), 2.0f}}) {
-            draw->AddCircle(centre, r, colour, 24, thickness);
-            draw->AddLine({centre.x - 2 * r, centre.y}, {centre.x - r, centre.y}, colour, thickness);
-            draw->AddLine({centre.x + r, centre.y}, {centre.x + 2 * r, centre.y}, colour, thickness);
-            draw->AddLine({centre.x, centre.y - 2 * r}, {centre.x, centre.y - r}, colour, thickness);
-            draw->AddLine({centre.x, centre.y + r}, {centre.x, centre.y + 2 * r}, colour, thickness);
-        }
-    }
-
     bool pickAt(const glm::dvec2& framebufferPixel) {
-        const PickRay ray = pickRay(lastCamera, viewport, framebufferPixel);
+        render::Viewport half = viewport;  // the half the click fell in, when the view is split
+        for (const render::Viewport& v : comparison->views(viewport))
+            if (framebufferPixel.x >= v.x && framebufferPixel.x < v.x + v.width) half = v;
+        const PickRay ray = pickRay(lastCamera, half, framebufferPixel);
         return probePanel->pick(ray.origin, ray.direction);
     }
 
@@ -284,6 +270,7 @@ struct Lab::State {
         const Snapshot& shown = live.snapshot();
         if (shown.running || solverThread.activity() != SolverActivity::Idle) return true;
         if (solverThread.snapshot()->generation != shown.generation) return true;
+        if (live.secondChanging()) return true;  // comparison mode: B still solving, or newer
         if (sidebar.busy() || screenshotRequested) return true;
         return glfwGetTime() - lastInput < kAwakeAfterInput;
     }
@@ -333,14 +320,15 @@ struct Lab::State {
         render::Viewport aboveStatus = viewInUiUnits;
         aboveStatus.height = std::max(1, aboveStatus.height - static_cast<int>(std::ceil(statusHeight)));
         drawLessonCaption(lessons, aboveStatus);
-        if (display.colourMode == render::ColourMode::FalseColour) drawLegendOverlay(patches->legend(), viewInUiUnits);
+        if (!comparison->drawOverlays(viewInUiUnits) && display.colourMode == render::ColourMode::FalseColour)
+            drawLegendOverlay(patches->legend(), viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
-        patches->setSettings(display);
-        patches->prepare();
-        patches->draw(lastCamera, viewport.aspect());
-        drawProbeMarker(height);  // before other overlays: only the scene hides it
-        hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene
+        comparison->draw(*patches, display, lastCamera, viewport, height);  // leaves the viewport on A
+        const std::vector<render::Viewport> views = comparison->views(viewport);
+        if (const std::optional<ProbePick>& pick = probePanel->picked())  // before other overlays: only the scene hides it
+            for (const render::Viewport& v : views) drawProbeMarker(lastCamera, v, height, pixelRatio, pick->point);
+        hemispherePanel->drawOverlay(lastCamera, views.front().aspect());  // the sky of the probe point, over A
         render::useWholeWindow(width, height);
         ui->render();
         if (capture || screenshotRequested) {
@@ -355,7 +343,7 @@ struct Lab::State {
     /// Importance-driven radiosity refines for the camera: each view it rests at (not every frame
     /// of a drag, which would restart the refinement each time) goes to the solver thread.
     void sendViewWhenStill(double now) {
-        const View view = render::viewFromCamera(lastCamera, viewport.aspect());
+        const View view = render::viewFromCamera(lastCamera, comparison->views(viewport).front().aspect());
         const auto same = [](const View& a, const View& b) {
             return a.eye == b.eye && a.target == b.target && a.up == b.up && a.verticalFov == b.verticalFov &&
                    a.aspect == b.aspect;
@@ -407,6 +395,7 @@ struct Lab::State {
     render::DisplaySettings display;
     std::optional<ImGuiLayer> ui;
     std::optional<render::PatchRenderer> patches;
+    std::optional<LabComparison> comparison;  ///< made with the renderer, released before it
     std::shared_ptr<const Scene> materialsShown;
     std::string sceneShown;
     std::string titleShown;
@@ -491,5 +480,11 @@ const LessonPlayer& Lab::lessons() const { return state_->lessons; }
 std::string Lab::lessonError() const { return state_->lessonError; }
 std::filesystem::path Lab::saveSession(const std::string& file) { return state_->saveSession(file); }
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
+void Lab::compare(bool on) { state_->live.compare(on); }
+void Lab::setComparison(const ComparisonSettings& settings) { state_->live.setComparison(settings); }
+std::shared_ptr<const Snapshot> Lab::secondSnapshot() const { return state_->live.secondCurrent; }
+const SolutionDifference& Lab::comparisonDifference() const { return state_->comparison->difference(); }
+std::vector<render::Viewport> Lab::sceneViews() const { return state_->comparison->views(state_->viewport); }
+std::optional<ProbeReading> Lab::secondProbeReading() const { return state_->probePanel->secondReading(); }
 
 } // namespace radiant::app

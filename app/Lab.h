@@ -7,12 +7,15 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include <glm/vec2.hpp>
 
 #include "app/LabApp.h"
 #include "app/lessons/LessonPlayer.h"
 #include "app/solver/SolverCommand.h"
+#include "app/solver/Comparison.h"
+#include "app/solver/SolutionDifference.h"
 #include "app/solver/Snapshot.h"
 #include "radiometry/probe/Probe.h"
 #include "render/DisplaySettings.h"
@@ -93,6 +96,18 @@ public:
     std::filesystem::path saveSession(const std::string& file = "");
     /// Tests: blocks until the solver thread has applied every command sent and stopped running.
     void waitForSolver();
+    /// Comparison mode (two methods side by side, app/solver/Comparison.h): on or off (key V cycles
+    /// off, side by side, difference), B's method, meshing and the view.
+    void compare(bool on);
+    void setComparison(const ComparisonSettings& settings);
+    /// B's snapshot the last frame drew; null while the comparison is off.
+    [[nodiscard]] std::shared_ptr<const Snapshot> secondSnapshot() const;
+    /// The difference view's values as last computed (mesh null: none yet).
+    [[nodiscard]] const SolutionDifference& comparisonDifference() const;
+    /// Where the last frame drew the 3D view, in framebuffer pixels: one viewport, or A's half and B's.
+    [[nodiscard]] std::vector<render::Viewport> sceneViews() const;
+    /// The probe's reading of solution B at the picked point (comparison mode), as probeReading() of A.
+    [[nodiscard]] std::optional<ProbeReading> secondProbeReading() const;
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.
     [[nodiscard]] std::string lessonError() const;
 

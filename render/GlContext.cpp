@@ -33,6 +33,10 @@ void beginWindowFrame(int framebufferWidth, int framebufferHeight, const Viewpor
                sceneViewport.height);
 }
 
+void useViewport(int framebufferHeight, const Viewport& viewport) {
+    glViewport(viewport.x, framebufferHeight - viewport.y - viewport.height, viewport.width, viewport.height);
+}
+
 void useWholeWindow(int framebufferWidth, int framebufferHeight) {
     glViewport(0, 0, framebufferWidth, framebufferHeight);
 }

@@ -24,6 +24,10 @@ GlInfo queryGlInfo();
 void beginWindowFrame(int framebufferWidth, int framebufferHeight, const Viewport& sceneViewport,
                       const glm::vec3& background);
 
+/// Restricts drawing to `viewport` (top-left origin) of the window's framebuffer: one half of a split
+/// 3D view (the comparison mode draws two solutions with one camera, side by side).
+void useViewport(int framebufferHeight, const Viewport& viewport);
+
 /// Resets the viewport to the whole window, for the UI pass.
 void useWholeWindow(int framebufferWidth, int framebufferHeight);
 

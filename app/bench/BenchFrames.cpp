@@ -349,7 +349,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     }
     drawFrames(lab, frames / 10);  // warm-up: shader variants, font atlas, first uploads
 
-    const auto measure = [&](const char* probe) {
+    const auto measure = [&](const char* probe, const std::string& compared = "") {
         lab.send(command::Pause{});
         frameUntil(lab, [](const Snapshot& s) { return !s.running; });
         const FrameRun idle = drawFrames(lab, frames);
@@ -359,8 +359,8 @@ BenchTable benchFrames(const BenchOptions& options) {
         lab.send(command::Pause{});
         const double idleP99 = percentile(idle.seconds, 0.99);
         const double runningP99 = percentile(running.seconds, 0.99);
-        const auto row = [&](const char* solver, const FrameRun& run, const std::string& ratio, const std::string& target) {
-            table.rows.push_back({probe, solver, std::to_string(run.seconds.size()), ms(median(run.seconds)),
+        const auto row = [&](const std::string& solver, const FrameRun& run, const std::string& ratio, const std::string& target) {
+            table.rows.push_back({probe, solver + compared, std::to_string(run.seconds.size()), ms(median(run.seconds)),
                                   ms(percentile(run.seconds, 0.99)), ratio, ms(run.processCpuPerFrame),
                                   ms(run.mainCpuPerFrame), std::to_string(run.uploads), std::to_string(run.steps), target, ""});
         };
@@ -371,11 +371,36 @@ BenchTable benchFrames(const BenchOptions& options) {
     // A floor point in front of the short block, as a student would click it.
     const glm::dvec3 floorPoint{0.28, 0.0, 0.12};
     const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
-    if (lab.clickAt({pixel.x, pixel.y})) {
+    const bool probed = lab.clickAt({pixel.x, pixel.y});
+    if (probed) {
         measure("on the floor");
     } else {
         table.notes.push_back("the floor click hit nothing: no probe rows");
     }
+    // Two methods side by side (issue #16 item 5): a second solver thread, B, progressive on 4x the
+    // patch area (a gathering method's matrix would not hold 20k patches), each half of the view
+    // drawing its own solution; then the difference view, recomputed per patch as either solve moves.
+    ComparisonSettings comparison;
+    comparison.method = SolverMethod::Progressive;
+    comparison.patchAreaScale = 4.0;
+    lab.setComparison(comparison);
+    lab.compare(true);
+    const auto secondReady = [&lab](const Snapshot&) {
+        const std::shared_ptr<const Snapshot> b = lab.secondSnapshot();
+        return b && b->solverBuilds > 0 && !b->running;
+    };
+    if (frameUntil(lab, secondReady)) {
+        lab.send(command::Step{8});  // both halves lit while idle
+        frameUntil(lab, [&](const Snapshot& a) { return !a.running && secondReady(a); });
+        const std::string b = std::to_string(lab.secondSnapshot()->mesh->size());
+        measure(probed ? "on the floor" : "none", ", compared with B (progressive, " + b + " patches) side by side");
+        comparison.view = ComparisonView::Difference;
+        lab.setComparison(comparison);
+        measure(probed ? "on the floor" : "none", ", compared with B (progressive, " + b + " patches), difference view");
+    } else {
+        table.notes.push_back("comparison rows skipped: B's solver was not built within 120 s");
+    }
+    lab.compare(false);
 
     const std::shared_ptr<const Snapshot> snapshot = lab.snapshot();
     table.notes.push_back(std::to_string(snapshot->mesh ? snapshot->mesh->size() : 0) + " patches (max patch area " +

@@ -11,6 +11,8 @@
 #include "app/solver/ConvergenceCsv.h"
 #include "app/solver/ConvergenceQuantity.h"
 #include "app/ui/Colours.h"
+#include "app/ui/ComparisonColours.h"
+#include "app/solver/Comparison.h"
 #include "app/ui/PlotAxes.h"
 
 namespace radiant::app {
@@ -71,14 +73,33 @@ ConvergencePlot::ConvergencePlot() {
     std::copy(name, name + std::char_traits<char>::length(name), csvPath_.begin());
 }
 
-void ConvergencePlot::draw(const Snapshot& snapshot) {
+std::vector<ConvergencePlot::Curve> ConvergencePlot::curves(const Snapshot& snapshot, const Snapshot* second) {
+    std::vector<Curve> curves;
+    if (second) {
+        // Comparison mode: the run of each side, in its side's colour (both may be one method).
+        const auto add = [&](const Snapshot& s, char side, ImU32 colour, double patchAreaScale) {
+            if (s.history.empty()) return;
+            curves.push_back({&s.history, s.method, comparisonLabel(side, s.method, patchAreaScale), colour, false});
+        };
+        add(snapshot, 'A', theme::kSideA, 1.0);
+        add(*second, 'B', theme::kSideB, second->meshing.maxPatchArea / std::max(snapshot.meshing.maxPatchArea, 1e-300));
+        return curves;
+    }
     std::vector<SegmentView> segments = snapshot.convergence.segments(snapshot.history);
+    if (segments.size() > kMaxSegmentsShown)
+        segments.erase(segments.begin(), segments.end() - static_cast<std::ptrdiff_t>(kMaxSegmentsShown));
+    for (const SegmentView& segment : segments)
+        curves.push_back({segment.steps, segment.info->method, segment.info->label, methodColour(segment.info->method),
+                          segment.info->index != 0});
+    return curves;
+}
+
+void ConvergencePlot::draw(const Snapshot& snapshot, const Snapshot* second) {
+    const std::vector<Curve> segments = curves(snapshot, second);
     if (segments.empty()) {
         ImGui::TextDisabled("Convergence: no steps yet (Run or Step)");
         return;
     }
-    if (segments.size() > kMaxSegmentsShown)
-        segments.erase(segments.begin(), segments.end() - static_cast<std::ptrdiff_t>(kMaxSegmentsShown));
 
     const float font = ImGui::GetFontSize();
     const float width = ImGui::GetContentRegionAvail().x;
@@ -93,13 +114,13 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
     // Half the tolerance: its line stays clear of the bottom edge, where its label would sit on the ticks.
     std::vector<double> values{snapshot.tolerance, 0.5 * snapshot.tolerance};
     const auto plotWidthPixels = static_cast<std::size_t>(std::max(1.0f, width - left - right));
-    for (const SegmentView& segment : segments) {
-        quantities.insert(convergenceQuantity(segment.info->method).name);
+    for (const Curve& segment : segments) {
+        quantities.insert(convergenceQuantity(segment.method).name);
         longest = std::max(longest, segment.steps->size());
     }
     // Long runs (thousands of shots) are thinned to about two points per pixel.
     const std::size_t stride = std::max<std::size_t>(1, longest / (2 * plotWidthPixels));
-    for (const SegmentView& segment : segments)
+    for (const Curve& segment : segments)
         for (std::size_t i = 0; i < segment.steps->size(); i += stride) values.push_back((*segment.steps)[i].residual);
 
     std::string quantity;
@@ -153,15 +174,15 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
     }
     draw->PushClipRect({lo.x, hi.y}, {hi.x, lo.y}, true);
     std::vector<ImVec2> points;
-    for (const SegmentView& segment : segments) {
+    for (const Curve& segment : segments) {
         points.clear();
         const SolveHistory& steps = *segment.steps;
         for (std::size_t i = 0; i < steps.size(); i += stride)
             points.push_back(toScreen(static_cast<double>(i + 1), steps[i].residual));
         if (points.back().x != toScreen(static_cast<double>(steps.size()), steps.back().residual).x)
             points.push_back(toScreen(static_cast<double>(steps.size()), steps.back().residual));
-        const ImU32 colour = methodColour(segment.info->method);
-        if (segment.info->index == 0) {
+        const ImU32 colour = segment.colour;
+        if (!segment.dashed) {
             draw->AddPolyline(points.data(), static_cast<int>(points.size()), colour, ImDrawFlags_None, 2.0f);
         } else {
             dashedPolyline(draw, points, colour, 2.0f, font * 0.45f);
@@ -174,12 +195,12 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
     ImGui::TextDisabled("iteration (from the start, or from the material edit)");
 
     // The legend: a sample of each curve's line and what it reached.
-    for (const SegmentView& segment : segments) {
-        const ImU32 colour = methodColour(segment.info->method);
+    for (const Curve& segment : segments) {
+        const ImU32 colour = segment.colour;
         const ImVec2 at = ImGui::GetCursorScreenPos();
         const float swatch = font * 1.6f;
         const float y = at.y + ImGui::GetTextLineHeight() * 0.5f;
-        if (segment.info->index == 0)
+        if (!segment.dashed)
             ImGui::GetWindowDrawList()->AddLine({at.x, y}, {at.x + swatch, y}, colour, 3.0f);
         else
             dashedPolyline(ImGui::GetWindowDrawList(), {{at.x, y}, {at.x + swatch, y}}, colour, 3.0f, font * 0.35f);
@@ -191,7 +212,7 @@ void ConvergencePlot::draw(const Snapshot& snapshot) {
             std::snprintf(reached, sizeof reached, "below %.0e at iteration %zu", snapshot.tolerance, *below);
         else
             std::snprintf(reached, sizeof reached, "%.2e after %zu", steps.back().residual, steps.size());
-        ImGui::TextWrapped("%s: %s", segment.info->label.c_str(), reached);
+        ImGui::TextWrapped("%s: %s", segment.label.c_str(), reached);
     }
     drawExport(snapshot);
 }

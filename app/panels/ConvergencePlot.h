@@ -6,6 +6,7 @@
 // (app/solver/ConvergenceCsv.h).
 #include <array>
 #include <string>
+#include <vector>
 
 #include "app/solver/Snapshot.h"
 
@@ -14,12 +15,21 @@ namespace radiant::app {
 class ConvergencePlot {
 public:
     ConvergencePlot();
-    void draw(const Snapshot& snapshot);
+    /// With `second` (comparison mode), the current run of each solver, in the sides' colours.
+    void draw(const Snapshot& snapshot, const Snapshot* second = nullptr);
 
     /// The newest segments plotted (and named in the legend); the CSV has them all.
     static constexpr std::size_t kMaxSegmentsShown = 8;
 
 private:
+    struct Curve {
+        const SolveHistory* steps;
+        SolverMethod method;
+        std::string label;
+        unsigned colour;  ///< ImU32
+        bool dashed;      ///< a re-solve after a material edit
+    };
+    static std::vector<Curve> curves(const Snapshot& snapshot, const Snapshot* second);
     void drawExport(const Snapshot& snapshot);
 
     std::array<char, 512> csvPath_{};

@@ -9,7 +9,9 @@
 
 #include "app/cli/ProbeCommandLine.h"
 #include "app/solver/ThreadPriority.h"
+#include "app/solver/SolutionDifference.h"
 #include "app/ui/Colours.h"
+#include "app/ui/ComparisonColours.h"
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/units/Photometry.h"
@@ -95,6 +97,8 @@ void ProbePanel::update() {
             error_ = std::move(measured.error);
             readingGeneration_ = measured.generation;
             measureSeconds_ = measured.seconds;
+            secondReading_ = std::move(measured.secondReading);
+            secondReadingGeneration_ = measured.secondGeneration;
         }
     }
     if (pick_ && pick_->meshGeneration != snapshot.meshGeneration) {
@@ -111,15 +115,19 @@ void ProbePanel::update() {
     }
     if (!pick_ || job_.valid()) return;
     const auto now = std::chrono::steady_clock::now();
-    const bool stale = dirty_ || snapshot.generation != readingGeneration_;
+    const bool stale =
+        dirty_ || snapshot.generation != readingGeneration_ || secondGeneration() != secondReadingGeneration_;
     // A new pick is answered at once; a converging solve at most every kRefreshInterval.
     if (stale && (dirty_ || now - lastStart_ >= kRefreshInterval)) startMeasuring(now);
 }
 
 bool ProbePanel::busy() const {
     // Not the path tracer: it refines for seconds, and the idle lab's half-second wake-ups show it.
-    return job_.valid() || (pick_ && (dirty_ || live_.snapshot().generation != readingGeneration_));
+    return job_.valid() || (pick_ && (dirty_ || live_.snapshot().generation != readingGeneration_ ||
+                                      secondGeneration() != secondReadingGeneration_));
 }
+
+std::uint64_t ProbePanel::secondGeneration() const { return live_.secondCurrent ? live_.secondCurrent->generation : 0; }
 
 void ProbePanel::followPathTraced(const std::shared_ptr<const Snapshot>& snapshot) {
     if (!pick_ || !snapshot->scene || !snapshot->rays || pick_->meshGeneration != snapshot->meshGeneration) return;
@@ -139,7 +147,8 @@ void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
     lastStart_ = now;
     // The gather casts rays to every patch the point sees: tens of milliseconds on a fine mesh, so
     // it runs on a worker that holds the snapshot (scene, mesh, radiosity) alive while it reads.
-    job_ = std::async(std::launch::async, [snapshot, at = *pick_, target = target_] {
+    std::shared_ptr<const Snapshot> second = live_.secondCurrent;
+    job_ = std::async(std::launch::async, [snapshot, second, at = *pick_, target = target_] {
         yieldToTheDisplay();  // a fresh thread each time: background work, as the solver's
         Measured measured;
         measured.generation = snapshot->generation;
@@ -149,6 +158,18 @@ void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
             measured.reading = probe.measure(at.point, at.normal, snapshot->radiosity, target);
         } catch (const std::exception& e) {
             measured.error = e.what();
+        }
+        // B's mesh may be another: the same point, located on it (its gather is the same rule's).
+        if (second && second->scene && second->mesh && !second->radiosity.empty()) {
+            measured.secondGeneration = second->generation;
+            try {
+                const Probe probe(*second->scene, *second->mesh, second->rays.get());
+                measured.secondReading = probe.measure(at.point, at.normal, second->radiosity);
+            } catch (const std::exception& e) {
+                if (measured.error.empty()) measured.error = std::string("B: ") + e.what();
+            }
+        } else if (second) {
+            measured.secondGeneration = second->generation;
         }
         measured.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
         return measured;
@@ -244,7 +265,28 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
     }
+    if (secondReading_) drawComparison(reading, *secondReading_);
     drawPathTraced(reading);
+}
+
+void ProbePanel::drawComparison(const ProbeReading& a, const ProbeReading& b) {
+    ImGui::Spacing();
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme::kSideA), "A");
+    ImGui::SameLine(0, 0);
+    ImGui::TextDisabled(" and ");
+    ImGui::SameLine(0, 0);
+    ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme::kSideB), "B");
+    ImGui::SameLine(0, 0);
+    ImGui::TextDisabled(" at this point (comparison)");
+    row("A: B of patch", "W/m\xC2\xB2", a.patchRadiosity.value());
+    row("B: B of patch", "W/m\xC2\xB2", b.patchRadiosity.value());
+    scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.patchRadiosity.value(), b.patchRadiosity.value()));
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Relative difference of the two solvers' own values for the patch under the point (R+G+B\n"
+                          "totals; the difference view shows this for every patch of the finer mesh)");
+    row("A: M+rho E", "W/m\xC2\xB2", a.radiosity.value());
+    row("B: M+rho E", "W/m\xC2\xB2", b.radiosity.value());
+    scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.radiosity.value(), b.radiosity.value()));
 }
 
 std::string ProbePanel::commandLine() const {

@@ -48,6 +48,8 @@ public:
     /// The newest finished reading and the snapshot generation it was measured on.
     [[nodiscard]] const std::optional<ProbeReading>& reading() const { return reading_; }
     [[nodiscard]] std::uint64_t readingGeneration() const { return readingGeneration_; }
+    /// Comparison mode: the same point read on solution B (LiveSolve::secondCurrent).
+    [[nodiscard]] const std::optional<ProbeReading>& secondReading() const { return secondReading_; }
     /// Chooses the target surface by index (the combo does this too).
     void setTarget(std::size_t surface);
     /// The display settings whose units switch adds lx and cd/m^2 rows (kept by reference).
@@ -65,12 +67,18 @@ private:
         std::string error;
         std::uint64_t generation = 0;
         double seconds = 0;
+        std::optional<ProbeReading> secondReading;  ///< comparison mode: on solution B
+        std::uint64_t secondGeneration = 0;
     };
     void startMeasuring(std::chrono::steady_clock::time_point now);
     void drawReadings(const Scene& scene, const ProbeReading& reading);
     void drawTarget(const Scene& scene);
     void drawPathTraced(const ProbeReading& reading);
     void drawCopyCommand();
+    /// Comparison mode: A's and B's values at the point and how far apart they are.
+    void drawComparison(const ProbeReading& a, const ProbeReading& b);
+    /// B's snapshot generation, or 0 with the comparison off.
+    [[nodiscard]] std::uint64_t secondGeneration() const;
     /// Starts the path tracer at the pick, or restarts it when the materials changed under it.
     void followPathTraced(const std::shared_ptr<const Snapshot>& snapshot);
 
@@ -80,6 +88,8 @@ private:
     std::uint64_t targetMesh_ = 0;  ///< mesh generation target_ was chosen for
     std::optional<ProbeReading> reading_;
     std::uint64_t readingGeneration_ = 0;
+    std::optional<ProbeReading> secondReading_;
+    std::uint64_t secondReadingGeneration_ = 0;
     std::string error_;
     double measureSeconds_ = 0;
     bool dirty_ = false;  ///< the pick or target changed since the last measurement started

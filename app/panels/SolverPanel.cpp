@@ -31,8 +31,9 @@ double total(const PowerRgb& power) {
 void SolverPanel::draw() {
     const Snapshot& snapshot = live_.snapshot();
     drawControls(snapshot);
+    drawComparison();
     drawStats(snapshot);
-    convergence_.draw(snapshot);
+    convergence_.draw(snapshot, live_.secondCurrent.get());
     drawStepTimes(snapshot);
 }
 
@@ -52,8 +53,8 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
     }
 
     const float buttonWidth = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
-    if (ImGui::Button(snapshot.running ? "Pause" : "Run", {buttonWidth, 0}))
-        live_.send(snapshot.running ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
+    if (ImGui::Button(live_.running() ? "Pause" : "Run", {buttonWidth, 0}))
+        live_.send(live_.running() ? SolverCommand{command::Pause{}} : SolverCommand{command::Run{}});
     ImGui::SameLine();
     if (ImGui::Button("Step", {buttonWidth, 0})) live_.send(command::Step{1});
     ImGui::SameLine();
@@ -91,6 +92,46 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
         ImGui::SetTooltip("Link tolerance: a link is refined while the radiosity error it may leave exceeds this\n"
                           "fraction of the emitted power. Smaller is more accurate and slower; changing it\n"
                           "rebuilds the links.");
+}
+
+void SolverPanel::drawComparison() {
+    bool comparing = live_.comparing();
+    if (ImGui::Checkbox("Compare two methods (V)", &comparing)) live_.compare(comparing);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Solves the same scene a second way (B) on a second solver thread: the 3D view splits\n"
+                          "in two halves with one camera, the plot shows both curves, the probe reads both.\n"
+                          "Turning it on restarts A, so both start from B = E together.");
+    if (!comparing) return;
+    ComparisonSettings settings = live_.comparison();
+    const float labelWidth = ImGui::CalcTextSize("B method").x + ImGui::GetStyle().ItemInnerSpacing.x;
+    ImGui::SetNextItemWidth(-labelWidth);
+    if (ImGui::BeginCombo("B method", methodLabel(settings.method))) {
+        for (const SolverMethodInfo& method : solverMethods())
+            if (ImGui::Selectable(method.label.data(), method.method == settings.method)) settings.method = method.method;
+        ImGui::EndCombo();
+    }
+    const char* meshShown = kPatchAreaChoices[0].label;
+    for (const PatchAreaChoice& choice : kPatchAreaChoices)
+        if (choice.scale == settings.patchAreaScale) meshShown = choice.label;
+    ImGui::SetNextItemWidth(-labelWidth);
+    if (ImGui::BeginCombo("B mesh", meshShown)) {
+        for (const PatchAreaChoice& choice : kPatchAreaChoices)
+            if (ImGui::Selectable(choice.label, choice.scale == settings.patchAreaScale)) settings.patchAreaScale = choice.scale;
+        ImGui::EndCombo();
+    }
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("B's largest patch area against A's (the Scene panel's meshing slider): one method at two\n"
+                          "meshings shows the discretisation error; the difference view maps the finer onto the coarser");
+    int view = settings.view == ComparisonView::SideBySide ? 0 : 1;
+    ImGui::RadioButton("Side by side", &view, 0);
+    ImGui::SameLine();
+    ImGui::RadioButton("Difference", &view, 1);
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Per patch of the finer mesh: |B_A - B_B| / B, the relative difference of the two\n"
+                          "solutions' radiosity, in false colour on a log scale");
+    settings.view = view == 0 ? ComparisonView::SideBySide : ComparisonView::Difference;
+    if (!(settings == live_.comparison())) live_.setComparison(settings);
+    ImGui::Separator();
 }
 
 void SolverPanel::drawStats(const Snapshot& snapshot) {

@@ -19,6 +19,8 @@ public:
 
 private:
     void drawControls(const Snapshot& snapshot);
+    /// Comparison mode: on/off, B's method and meshing, side by side or difference.
+    void drawComparison();
     void drawStats(const Snapshot& snapshot);
     void drawStepTimes(const Snapshot& snapshot);
 

@@ -14,6 +14,8 @@ struct LegendBarRect {
 };
 
 /// Draws the legend as an ImGui window anchored to `view` (UI units); call between newFrame and render.
+/// The legend's quantity and unit title it (radiosity in W/m^2, illuminance in lx, or the comparison's
+/// difference ratio).
 LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view);
 
 } // namespace radiant::app

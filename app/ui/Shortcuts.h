@@ -8,7 +8,7 @@ namespace radiant::app {
 
 enum class LabAction {
     RunPause, Step, Reset, Rekey, FalseColour, Wireframe, HomeView, TogglePanels, Dome, NextLessonStep,
-    PreviousLessonStep, SaveSession, OpenFile, UndoMaterial, RedoMaterial, Screenshot, Quit
+    PreviousLessonStep, Compare, SaveSession, OpenFile, UndoMaterial, RedoMaterial, Screenshot, Quit
 };
 
 struct Shortcut {

@@ -1,0 +1,86 @@
+#include "app/solver/SolutionDifference.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "radiometry/mesh/PatchLocator.h"
+
+namespace radiant::app {
+namespace {
+
+double total(const Rgb& b) { return b.x + b.y + b.z; }
+
+bool samePatches(const PatchMesh& a, const PatchMesh& b) {
+    if (a.size() != b.size()) return false;
+    for (std::size_t p = 0; p < a.size(); ++p)
+        if (a.patches[p].surface != b.patches[p].surface || a.patches[p].centroid != b.patches[p].centroid) return false;
+    return true;
+}
+
+} // namespace
+
+double relativeDifference(const Rgb& a, const Rgb& b) {
+    const double ta = total(a), tb = total(b);
+    const double larger = std::max(std::abs(ta), std::abs(tb));
+    return larger > 0 ? std::abs(ta - tb) / larger : 0.0;
+}
+
+std::vector<std::size_t> SolutionDifferencer::correspondence(const PatchMesh& fine, const PatchMesh& coarse) {
+    std::vector<std::size_t> coarseOf(fine.size());
+    // Two threads meshing the same scene alike make the same patches: the identity, without a search.
+    if (samePatches(fine, coarse)) {
+        for (std::size_t p = 0; p < fine.size(); ++p) coarseOf[p] = p;
+        return coarseOf;
+    }
+    const PatchLocator locator(coarse);
+    for (std::size_t p = 0; p < fine.size(); ++p) {
+        const Patch& patch = fine.patches[p];
+        const std::size_t q = locator.find(patch.surface, patch.face, patch.centroid);
+        coarseOf[p] = q == PatchLocator::npos ? 0 : q;  // a face both meshes cut has patches in both
+    }
+    return coarseOf;
+}
+
+const SolutionDifference& SolutionDifferencer::update(const Snapshot& a, const Snapshot& b) {
+    if (a.generation == generationA_ && b.generation == generationB_) return difference_;
+    generationA_ = a.generation;
+    generationB_ = b.generation;
+    // Before its first step a side shows its emission alone (while its form factors compute, say):
+    // no solution to set against the other's yet.
+    const bool ready = a.mesh && b.mesh && a.scene && a.radiosity.size() == a.mesh->size() &&
+                       b.radiosity.size() == b.mesh->size() && !a.radiosity.empty() && !b.radiosity.empty() &&
+                       !a.history.empty() && !b.history.empty();
+    if (!ready) {
+        difference_.mesh.reset();
+        difference_.relative.clear();
+        ++difference_.generation;
+        return difference_;
+    }
+    const bool firstIsFiner = a.mesh->size() >= b.mesh->size();
+    const Snapshot& fine = firstIsFiner ? a : b;
+    const Snapshot& coarse = firstIsFiner ? b : a;
+    if (fine.mesh != fineMesh_ || coarse.mesh != coarseMesh_) {
+        coarseOf_ = correspondence(*fine.mesh, *coarse.mesh);
+        fineMesh_ = fine.mesh;
+        coarseMesh_ = coarse.mesh;
+    }
+    SolutionDifference& d = difference_;
+    d.mesh = fine.mesh;
+    d.scene = fine.scene;
+    d.onFirst = firstIsFiner;
+    d.relative.resize(fine.mesh->size());
+    d.maxRelative = 0;
+    double weighted = 0, area = 0;
+    for (std::size_t p = 0; p < d.relative.size(); ++p) {
+        const double r = relativeDifference(fine.radiosity[p], coarse.radiosity[coarseOf_[p]]);
+        d.relative[p] = r;
+        d.maxRelative = std::max(d.maxRelative, r);
+        weighted += r * fine.mesh->patches[p].area;
+        area += fine.mesh->patches[p].area;
+    }
+    d.meanRelative = area > 0 ? weighted / area : 0;
+    ++d.generation;
+    return d;
+}
+
+} // namespace radiant::app
