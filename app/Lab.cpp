@@ -21,6 +21,7 @@
 #include "app/panels/InfoPanel.h"
 #include "app/panels/LessonsPanel.h"
 #include "app/panels/IntegralsPanel.h"
+#include "app/panels/demos/DemoView.h"
 #include "app/panels/demos/LectureDemosPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
@@ -29,6 +30,7 @@
 #include "app/solver/LiveSolve.h"
 #include "app/solver/MethodLabel.h"
 #include "app/solver/SolverThread.h"
+#include "app/ui/DemoLabels.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/LegendOverlay.h"
@@ -45,6 +47,7 @@
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
+#include "render/demo/DemoRenderer.h"
 #include "render/overlay/DepthVisibility.h"
 #include "render/camera/OrbitCamera.h"
 
@@ -93,6 +96,7 @@ struct Lab::State {
         });
         ui.emplace(window.handle(), options.uiScale);
         patches.emplace();
+        demoRenderer.emplace();
 
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
         scenePanel = scene.get();
@@ -117,7 +121,7 @@ struct Lab::State {
         hemispherePanel = hemisphere.get();
         sidebar.add(std::move(hemisphere));
         sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
-        auto demos = std::make_unique<LectureDemosPanel>();
+        auto demos = std::make_unique<LectureDemosPanel>(demoView);
         demosPanel = demos.get();
         sidebar.add(std::move(demos));
         auto lessonList = std::make_unique<LessonsPanel>(lessons, [this](const std::string& file) -> std::string {
@@ -138,6 +142,7 @@ struct Lab::State {
 
     ~State() {
         patches.reset();  // GL objects die while their context is alive
+        demoRenderer.reset();
         ui.reset();
     }
 
@@ -193,7 +198,7 @@ struct Lab::State {
         if (s.scene->name != sceneShown) {
             // The home view casts with the scene's one ray caster, which the solver thread builds
             // (the window's first frames used the outside framing meanwhile).
-            orbit = orbitFromHome(*s.scene, s.rays.get());
+            demoView.sceneCamera() = orbitFromHome(*s.scene, s.rays.get());  // not a demo's camera
             viewSent.reset();  // the solver thread forgot the old scene's camera
             sceneShown = s.scene->name;
         }
@@ -247,6 +252,21 @@ struct Lab::State {
             draw->AddLine({centre.x, centre.y - 2 * r}, {centre.x, centre.y - r}, colour, thickness);
             draw->AddLine({centre.x, centre.y + r}, {centre.x, centre.y + 2 * r}, colour, thickness);
         }
+    }
+
+    /// The open demo's picture in place of the scene, its labels over it, and its reading under the
+    /// pointer when the pointer is over the 3D view.
+    void drawDemo(const LectureDemo& demo, float pixelRatio) {
+        std::optional<PickRay> cursor;
+        const ImGuiIO& io = ImGui::GetIO();
+        const glm::dvec2 pointer{io.MousePos.x * pixelRatio, io.MousePos.y * pixelRatio};
+        if (ImGui::IsMousePosValid() && !io.WantCaptureMouse && pointer.x >= viewport.x && pointer.y >= viewport.y &&
+            pointer.x < viewport.x + viewport.width && pointer.y < viewport.y + viewport.height)
+            cursor = pickRay(lastCamera, viewport, pointer);
+        const render::DemoDrawing picture = demo.picture(cursor);
+        demoRenderer->set(picture, ui->uiScale() * pixelRatio);
+        demoRenderer->draw(lastCamera, viewport.aspect());
+        drawDemoLabels(picture, lastCamera, viewport, pixelRatio);
     }
 
     bool pickAt(const glm::dvec2& framebufferPixel) {
@@ -311,22 +331,29 @@ struct Lab::State {
         const render::Viewport viewInUiUnits{static_cast<int>(sidebarWidth), 0,
                                              static_cast<int>(static_cast<float>(viewport.width) / pixelRatio),
                                              static_cast<int>(static_cast<float>(viewport.height) / pixelRatio)};
+        // Folding the demos' header away (sidebar shown) closes the demo, as closing its section does.
+        if (panelsVisible && demoView.active() && !demosPanel->drawn()) demosPanel->closeDemo();
+        const LectureDemo* demo = demoView.active();
         controller.update(orbit, viewInUiUnits);
         lastCamera = orbit.camera();
-        sendViewWhenStill(now);
-        if (const std::optional<glm::dvec2> click = controller.click())
+        if (!demo) sendViewWhenStill(now);  // a demo's camera is not the scene's: importance keeps the scene's
+        if (const std::optional<glm::dvec2> click = controller.click(); click && !demo)
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
         if (panelsVisible) drawStatusBar(viewInUiUnits, status());
         drawLessonCaption(lessons, viewInUiUnits);
-        if (display.colourMode == render::ColourMode::FalseColour) drawLegendOverlay(patches->legend(), viewInUiUnits);
+        if (display.colourMode == render::ColourMode::FalseColour && !demo) drawLegendOverlay(patches->legend(), viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
         patches->setSettings(display);
         patches->prepare();
-        patches->draw(lastCamera, viewport.aspect());
-        drawProbeMarker(height);  // before other overlays: only the scene hides it
-        hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene
+        if (demo) {
+            drawDemo(*demo, pixelRatio);
+        } else {
+            patches->draw(lastCamera, viewport.aspect());
+            drawProbeMarker(height);  // before other overlays: only the scene hides it
+            hemispherePanel->drawOverlay(lastCamera, viewport.aspect());  // the sky of the probe point, over the scene
+        }
         render::useWholeWindow(width, height);
         ui->render();
         if (capture || screenshotRequested) {
@@ -368,11 +395,10 @@ struct Lab::State {
         if (const std::optional<ProbeReading>& reading = probePanel->reading(); reading && reading->target)
             target = reading->target->name;
         return lesson::writeSession(
-            lesson::captureSession(live.snapshot(), orbit.camera(), orbit.pivot(), probePanel->picked(), target, display),
+            lesson::captureSession(live.snapshot(), demoView.sceneCamera().camera(), demoView.sceneCamera().pivot(),
+                                   probePanel->picked(), target, display),
             path);
     }
-
-
 
     void saveScreenshot(const render::ImageRgb8& image) {
         screenshotRequested = false;
@@ -387,12 +413,14 @@ struct Lab::State {
     Window window;
     render::GlInfo gl;
     render::OrbitCamera orbit;
+    DemoView demoView{orbit};  ///< puts the scene's camera aside while a lecture demo has the 3D view
     bool panelsVisible;
     SolverThread solverThread;
     LiveSolve live;
     render::DisplaySettings display;
     std::optional<ImGuiLayer> ui;
     std::optional<render::PatchRenderer> patches;
+    std::optional<render::DemoRenderer> demoRenderer;
     std::shared_ptr<const Scene> materialsShown;
     std::string sceneShown;
     std::string titleShown;
@@ -477,5 +505,11 @@ const LessonPlayer& Lab::lessons() const { return state_->lessons; }
 std::string Lab::lessonError() const { return state_->lessonError; }
 std::filesystem::path Lab::saveSession(const std::string& file) { return state_->saveSession(file); }
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
+void Lab::openDemo(const std::string& id) { state_->stage->openDemo(id); }
+void Lab::closeDemo() { state_->demosPanel->closeDemo(); }
+std::string Lab::activeDemo() const {
+    const LectureDemo* demo = state_->demoView.active();
+    return demo ? demo->id() : "";
+}
 
 } // namespace radiant::app

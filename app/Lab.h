@@ -93,6 +93,13 @@ public:
     std::filesystem::path saveSession(const std::string& file = "");
     /// Tests: blocks until the solver thread has applied every command sent and stopped running.
     void waitForSolver();
+    /// Shows a lecture demo (lesson::demoIds(): "point-source", ...) in the 3D view, its section open
+    /// in the sidebar, the scene's camera put aside; an unknown id does nothing.
+    void openDemo(const std::string& id);
+    /// Back to the scene, its camera as it was (the solve and the probe were never touched).
+    void closeDemo();
+    /// The id of the demo the 3D view shows, or empty.
+    [[nodiscard]] std::string activeDemo() const;
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.
     [[nodiscard]] std::string lessonError() const;
 
