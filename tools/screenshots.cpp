@@ -222,7 +222,7 @@ void demos3d(const std::filesystem::path& dir) {
         lab.openDemo(id);
         for (int i = 0; i < 4; ++i) lab.frame();
         if (id == "point-source") {
-            const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), {2.2, 0.0, -1.2});
+            const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), {-2.6, 0.0, 1.6});
             lab.overrideMouse(glm::vec2(static_cast<float>(pixel.x), static_cast<float>(pixel.y)));
         }
         render::ImageRgb8 image;

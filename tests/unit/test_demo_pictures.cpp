@@ -57,7 +57,7 @@ double numberAfter(const render::DemoDrawing& d, const std::string& key) {
 } // namespace
 
 TEST_CASE("the square's projection onto the unit hemisphere has the square's solid angle for its area") {
-    for (const std::pair<double, double> sideAndDistance : {std::pair{1.0, 2.0}, std::pair{0.5, 0.3}, std::pair{3.0, 1.0}}) {
+    for (const std::pair<double, double>& sideAndDistance : {std::pair{1.0, 2.0}, std::pair{0.5, 0.3}, std::pair{3.0, 1.0}}) {
         const double side = sideAndDistance.first, distance = sideAndDistance.second;
         CAPTURE(side);
         CAPTURE(distance);

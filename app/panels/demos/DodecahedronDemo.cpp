@@ -141,7 +141,9 @@ render::DemoDrawing DodecahedronDemo::picture(const std::optional<PickRay>&) con
         d.line({0, 0, 0}, p(v), kProbe, 2.0f);
         centre += v / static_cast<double>(highlighted.size());
     }
-    d.label(p(centre * 1.15) + glm::vec3(0.05f, 0.1f, 0.0f),
+    // Outside the solid, beyond the face's centre, so the label leaves the face to be seen.
+    d.line(p(centre), p(centre * 1.45), kHighlight, 1.5f);
+    d.label(p(centre * 1.5),
             printed("one face of %d: 4 pi / %d = %.4f sr\nfrom its corners: %.4f sr", faces, faces, n.perFace.value(),
                     n.polygonRoute.value()), kHighlight);
     return d;

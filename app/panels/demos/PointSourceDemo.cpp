@@ -39,7 +39,7 @@ double irradianceAt(const PointSourceSettings& s, double x, double z) {
 
 } // namespace
 
-DemoFraming PointSourceDemo::framing() const { return framingFrom({0.5, 7.0, 11.8}, {0.5, 0.6, 0.0}, 50); }
+DemoFraming PointSourceDemo::framing() const { return framingFrom({-0.4, 9.0, 11.6}, {-0.4, 0.3, 0.3}, 52); }
 
 // The plane in false colour of E with isolines at the legend's round values, a colour bar with its
 // ticks, the source over it with its numbers, the measured point at the origin, and the reading where
@@ -69,8 +69,9 @@ render::DemoDrawing PointSourceDemo::picture(const std::optional<PickRay>& curso
     d.loop({point3(-kHalfWidth, 0, -kHalfDepth), point3(kHalfWidth, 0, -kHalfDepth), point3(kHalfWidth, 0, kHalfDepth),
             point3(-kHalfWidth, 0, kHalfDepth)}, kAxis);
 
-    // The colour bar standing at the plane's right edge, its ticks the isolines' values.
-    const double barX = kHalfWidth + 0.4, barHeight = 3.0;
+    // The colour bar standing at the plane's left edge (the source's label runs to the right), its
+    // ticks the isolines' values.
+    const double barX = -kHalfWidth - 0.9, barHeight = 3.0;
     for (int i = 0; i < 40; ++i) {
         const double y0 = barHeight * i / 40, y1 = barHeight * (i + 1) / 40;
         const double e0 = legend.maxW_m2 * i / 40, e1 = legend.maxW_m2 * (i + 1) / 40;
@@ -92,13 +93,13 @@ render::DemoDrawing PointSourceDemo::picture(const std::optional<PickRay>& curso
     const glm::vec3 source = point3(s.offsetM, s.heightM, 0);
     d.sphere(source, 0.14f, kLight);
     d.dashedLine(source, point3(s.offsetM, 0, 0), 0.1f, kLight);
-    d.label(source + glm::vec3(0.25f, 0.15f, 0),
+    d.label(source + glm::vec3(0.2f, 1.2f, 0),
             printed("source: P = %.0f W, I = P / 4 pi = %.3g W/sr\nh = %.2f m, below it E = I / h^2 = %.3g W/m^2",
                     s.powerW, n.intensity.value(), s.heightM, n.directlyBelow.value()), kLight);
     d.line(source, point3(0, 0, 0), kHighlight);
     d.circle(point3(0, 0.01, 0), {1, 0, 0}, {0, 0, 1}, 0.12f, kHighlight, 3.0f, 24);
     // Its numbers at the plane's front-left corner, clear of the source's and the cursor's.
-    d.label(point3(-kHalfWidth, 0, kHalfDepth + 0.3),
+    d.label(point3(-kHalfWidth + 0.2, 0, kHalfDepth - 0.4),
             printed("measured point (ring), %.2f m from the foot: r = %.2f m, cos theta = %.3f\nE = I cos theta / r^2 = %.4g W/m^2",
                     s.offsetM, n.distance.value(), n.cosIncidence, n.irradiance.value()), kHighlight);
 

@@ -24,7 +24,7 @@ RadianceIrradianceNumbers radianceIrradianceNumbers(const RadianceIrradianceSett
     return n;
 }
 
-DemoFraming RadianceIrradianceDemo::framing() const { return framingFrom({4.9, 4.0, -3.1}, {0.0, 1.4, 0.2}, 50); }
+DemoFraming RadianceIrradianceDemo::framing() const { return framingFrom({5.4, 3.0, -2.2}, {0.0, 1.4, 0.2}, 50); }
 
 // A receiver of 1 m^2 at the origin, turned by theta about x, under a beam from a distant source
 // straight above: the parallel rays it intercepts fill a cross-section of cos theta m^2 (drawn

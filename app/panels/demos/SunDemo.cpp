@@ -98,8 +98,8 @@ render::DemoDrawing SunDemo::picture(const std::optional<PickRay>&) const {
 
     // The distance axis with its ticks.
     const float axisY = -1.9f;
-    d.line(point3(axisX(kAxisFromAu), axisY, 0), point3(axisX(kAxisToAu), axisY, 0), kAxis);
-    for (const double au : {0.1, 0.3, 1.0, 3.0, 10.0, 30.0}) {
+    d.line(point3(axisX(0.2), axisY, 0), point3(axisX(kAxisToAu), axisY, 0), kAxis);
+    for (const double au : {0.3, 1.0, 3.0, 10.0, 30.0}) {
         d.line(point3(axisX(au), axisY, 0), point3(axisX(au), axisY - 0.12, 0), kAxis);
         d.label(point3(axisX(au) - 0.15, axisY - 0.35, 0), printed("%g au", au), kAxis);
     }
@@ -108,7 +108,7 @@ render::DemoDrawing SunDemo::picture(const std::optional<PickRay>&) const {
     // E(d) on log-log axes: log10 E(d) / E(40 au) = 2 log10(40 au / d).
     const auto plotY = [&](double au) { return kPlotBase + kMetresPerDecadeOfE * 2 * std::log10(kAxisToAu / au); };
     d.line(point3(axisX(0.3), plotY(0.3), 0), point3(axisX(kAxisToAu), plotY(kAxisToAu), 0), kHighlight, 3.0f);
-    d.label(point3(axisX(12.0), plotY(12.0) + 0.25, 0), "E = L omega, falling as 1 / d^2 (log-log)", kHighlight);
+    d.label(point3(axisX(0.25), plotY(0.3) + 0.45, 0), "E = L omega, falling as 1 / d^2 (log-log)", kHighlight);
 
     struct Shown { const char* name; const SunPlanetNumbers* numbers; double au; glm::vec4 colour; float labelY; };
     const Shown planets[] = {{"Earth", &n.earth, 1.0, kProbe, 0.55f},
