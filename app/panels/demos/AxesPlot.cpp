@@ -18,7 +18,7 @@ double fraction(const PlotAxis& axis, double v) {
 } // namespace
 
 void drawAxesPlot(const std::vector<double>& xs, const std::vector<double>& ys, const PlotAxis& x,
-                  const PlotAxis& y, float heightInFonts) {
+                  const PlotAxis& y, double markerX, float heightInFonts) {
     const float font = ImGui::GetFontSize();
     char text[32];
     float tickLabelWidth = 0;
@@ -60,6 +60,10 @@ void drawAxesPlot(const std::vector<double>& xs, const std::vector<double>& ys, 
     draw->PushClipRect(lo, hi, true);
     for (std::size_t i = 0; i + 1 < std::min(xs.size(), ys.size()); ++i)
         draw->AddLine(screen(xs[i], ys[i]), screen(xs[i + 1], ys[i + 1]), ImGui::GetColorU32(ImGuiCol_PlotLines), 2.0f);
+    if (std::isfinite(markerX)) {
+        const float px = screen(markerX, y.lo).x;
+        draw->AddLine({px, lo.y}, {px, hi.y}, ImGui::GetColorU32(ImGuiCol_PlotLinesHovered), 1.5f);
+    }
     draw->PopClipRect();
 }
 

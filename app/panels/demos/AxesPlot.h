@@ -12,8 +12,9 @@ struct PlotAxis {
     std::vector<double> ticks;    ///< values marked and numbered (%g)
 };
 
-/// Fills the panel's width, `heightInFonts` font sizes tall; xs and ys of the same length.
+/// Fills the panel's width, `heightInFonts` font sizes tall; xs and ys of the same length. A finite
+/// `markerX` draws a vertical line there: where the sliders stand now.
 void drawAxesPlot(const std::vector<double>& xs, const std::vector<double>& ys, const PlotAxis& x,
-                  const PlotAxis& y, float heightInFonts = 8.0f);
+                  const PlotAxis& y, double markerX, float heightInFonts = 8.0f);
 
 } // namespace radiant::app

@@ -106,7 +106,7 @@ RegularSolidNumbers regularSolidNumbers(int faces) {
     return n;
 }
 
-DemoFraming DodecahedronDemo::framing() const { return framingFrom({2.0, 1.3, -2.6}, {0.25, 0.05, 0.0}, 50); }
+DemoFraming DodecahedronDemo::framing() const { return framingFrom({2.35, 1.6, -3.05}, {0.2, 0.2, 0.0}, 50); }
 
 // The chosen solid around the eye at its centre (vertices on the unit sphere), its faces veiled and
 // one face, the one nearest kHighlightToward, solid with the rays from the eye to its corners and its
@@ -141,9 +141,10 @@ render::DemoDrawing DodecahedronDemo::picture(const std::optional<PickRay>&) con
         d.line({0, 0, 0}, p(v), kProbe, 2.0f);
         centre += v / static_cast<double>(highlighted.size());
     }
-    // Outside the solid, beyond the face's centre, so the label leaves the face to be seen.
-    d.line(p(centre), p(centre * 1.45), kHighlight, 1.5f);
-    d.label(p(centre * 1.5),
+    // Above the solid, a leader line from the face's centre, so the label leaves the face to be seen.
+    const glm::vec3 labelAt = p(centre * 1.15) + glm::vec3(0.0f, 0.75f, 0.0f);
+    d.line(p(centre), labelAt, kHighlight, 1.5f);
+    d.label(labelAt,
             printed("one face of %d: 4 pi / %d = %.4f sr\nfrom its corners: %.4f sr", faces, faces, n.perFace.value(),
                     n.polygonRoute.value()), kHighlight);
     return d;

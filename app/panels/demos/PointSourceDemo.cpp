@@ -144,7 +144,7 @@ void PointSourceDemo::draw() {
     }
     const double top = n.directlyBelow.value();
     drawAxesPlot(xs, profile, {-5, 5, false, "x (m)", {-5, -2.5, 0, 2.5, 5}},
-                 {0, top * 1.05, false, "E (W/m^2)", {0, top / 2, top}});
+                 {0, top * 1.05, false, "E (W/m^2)", {0, top / 2, top}}, 0.0);  // the measured point
 }
 
 } // namespace radiant::app

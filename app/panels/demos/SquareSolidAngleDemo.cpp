@@ -116,7 +116,7 @@ void SquareSolidAngleDemo::draw() {
         error[i] = 100.0 * squareSolidAngleNumbers(at).relativeError;
     }
     drawAxesPlot(ratio, error, {0.1, 31.6, true, "R / s (log)", {0.1, 1, 10}},
-                 {0.01, 3000, true, "A / R^2 overshoot (%, log)", {0.01, 1, 100}});
+                 {0.01, 3000, true, "A / R^2 overshoot (%, log)", {0.01, 1, 100}}, settings.distanceM / settings.sideM);
 }
 
 } // namespace radiant::app
