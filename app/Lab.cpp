@@ -30,7 +30,7 @@
 #include "app/solver/LiveSolve.h"
 #include "app/solver/MethodLabel.h"
 #include "app/solver/SolverThread.h"
-#include "app/ui/DemoLabels.h"
+#include "app/ui/DemoPicture.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/LegendOverlay.h"
@@ -47,7 +47,6 @@
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/Screenshot.h"
-#include "render/demo/DemoRenderer.h"
 #include "render/overlay/DepthVisibility.h"
 #include "render/camera/OrbitCamera.h"
 
@@ -254,21 +253,6 @@ struct Lab::State {
         }
     }
 
-    /// The open demo's picture in place of the scene, its labels over it, and its reading under the
-    /// pointer when the pointer is over the 3D view.
-    void drawDemo(const LectureDemo& demo, float pixelRatio) {
-        std::optional<PickRay> cursor;
-        const ImGuiIO& io = ImGui::GetIO();
-        const glm::dvec2 pointer{io.MousePos.x * pixelRatio, io.MousePos.y * pixelRatio};
-        if (ImGui::IsMousePosValid() && !io.WantCaptureMouse && pointer.x >= viewport.x && pointer.y >= viewport.y &&
-            pointer.x < viewport.x + viewport.width && pointer.y < viewport.y + viewport.height)
-            cursor = pickRay(lastCamera, viewport, pointer);
-        const render::DemoDrawing picture = demo.picture(cursor);
-        demoRenderer->set(picture, ui->uiScale() * pixelRatio);
-        demoRenderer->draw(lastCamera, viewport.aspect());
-        drawDemoLabels(picture, lastCamera, viewport, pixelRatio);
-    }
-
     bool pickAt(const glm::dvec2& framebufferPixel) {
         const PickRay ray = pickRay(lastCamera, viewport, framebufferPixel);
         return probePanel->pick(ray.origin, ray.direction);
@@ -348,7 +332,7 @@ struct Lab::State {
         patches->setSettings(display);
         patches->prepare();
         if (demo) {
-            drawDemo(*demo, pixelRatio);
+            drawDemoPicture(*demo, *demoRenderer, lastCamera, viewport, pixelRatio, ui->uiScale());
         } else {
             patches->draw(lastCamera, viewport.aspect());
             drawProbeMarker(height);  // before other overlays: only the scene hides it

@@ -1,8 +1,12 @@
-#include "app/ui/DemoLabels.h"
+#include "app/ui/DemoPicture.h"
 
 #include <imgui.h>
 
 #include <algorithm>
+#include <optional>
+
+#include "app/panels/demos/LectureDemo.h"
+#include "app/window/PickRay.h"
 
 namespace radiant::app {
 
@@ -32,6 +36,20 @@ void drawDemoLabels(const render::DemoDrawing& drawing, const render::Camera& ca
                       label.text.c_str());
     }
     draw->PopClipRect();
+}
+
+void drawDemoPicture(const LectureDemo& demo, render::DemoRenderer& renderer, const render::Camera& camera,
+                     const render::Viewport& viewport, float pixelRatio, float uiScale) {
+    std::optional<PickRay> cursor;
+    const ImGuiIO& io = ImGui::GetIO();
+    const glm::dvec2 pointer{io.MousePos.x * pixelRatio, io.MousePos.y * pixelRatio};
+    if (ImGui::IsMousePosValid() && !io.WantCaptureMouse && pointer.x >= viewport.x && pointer.y >= viewport.y &&
+        pointer.x < viewport.x + viewport.width && pointer.y < viewport.y + viewport.height)
+        cursor = pickRay(camera, viewport, pointer);
+    const render::DemoDrawing picture = demo.picture(cursor);
+    renderer.set(picture, uiScale * pixelRatio);
+    renderer.draw(camera, viewport.aspect());
+    drawDemoLabels(picture, camera, viewport, pixelRatio);
 }
 
 } // namespace radiant::app
