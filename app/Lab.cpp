@@ -22,6 +22,7 @@
 #include "app/panels/InfoPanel.h"
 #include "app/panels/LessonsPanel.h"
 #include "app/panels/IntegralsPanel.h"
+#include "app/panels/demos/DemoView.h"
 #include "app/panels/demos/LectureDemosPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
@@ -30,6 +31,7 @@
 #include "app/solver/LiveSolve.h"
 #include "app/solver/MethodLabel.h"
 #include "app/solver/SolverThread.h"
+#include "app/ui/DemoPicture.h"
 #include "app/ui/FrameStats.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/ui/LegendOverlay.h"
@@ -96,6 +98,7 @@ struct Lab::State {
         ui.emplace(window.handle(), options.uiScale);
         patches.emplace();
         comparison.emplace(live);
+        demoRenderer.emplace();
 
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
         scenePanel = scene.get();
@@ -120,7 +123,7 @@ struct Lab::State {
         hemispherePanel = hemisphere.get();
         sidebar.add(std::move(hemisphere));
         sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
-        auto demos = std::make_unique<LectureDemosPanel>();
+        auto demos = std::make_unique<LectureDemosPanel>(demoView);
         demosPanel = demos.get();
         sidebar.add(std::move(demos));
         auto lessonList = std::make_unique<LessonsPanel>(lessons, [this](const std::string& file) -> std::string {
@@ -142,6 +145,7 @@ struct Lab::State {
     ~State() {
         comparison->release();  // GL objects die while their context is alive
         patches.reset();
+        demoRenderer.reset();
         ui.reset();
     }
 
@@ -205,7 +209,7 @@ struct Lab::State {
         if (s.scene->name != sceneShown) {
             // The home view casts with the scene's one ray caster, which the solver thread builds
             // (the window's first frames used the outside framing meanwhile).
-            orbit = orbitFromHome(*s.scene, s.rays.get());
+            demoView.sceneCamera() = orbitFromHome(*s.scene, s.rays.get());  // not a demo's camera
             viewSent.reset();  // the solver thread forgot the old scene's camera
             sceneShown = s.scene->name;
         }
@@ -310,25 +314,32 @@ struct Lab::State {
         const render::Viewport viewInUiUnits{static_cast<int>(sidebarWidth), 0,
                                              static_cast<int>(static_cast<float>(viewport.width) / pixelRatio),
                                              static_cast<int>(static_cast<float>(viewport.height) / pixelRatio)};
+        // Folding the demos' header away (sidebar shown) closes the demo, as closing its section does.
+        if (panelsVisible && demoView.active() && !demosPanel->drawn()) demosPanel->closeDemo();
+        const LectureDemo* demo = demoView.active();
         controller.update(orbit, viewInUiUnits);
         lastCamera = orbit.camera();
-        sendViewWhenStill(now);
-        if (const std::optional<glm::dvec2> click = controller.click())
+        if (!demo) sendViewWhenStill(now);  // a demo's camera is not the scene's: importance keeps the scene's
+        if (const std::optional<glm::dvec2> click = controller.click(); click && !demo)
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
         const float statusHeight = panelsVisible ? drawStatusBar(viewInUiUnits, status()) : 0.0f;
         render::Viewport aboveStatus = viewInUiUnits;
         aboveStatus.height = std::max(1, aboveStatus.height - static_cast<int>(std::ceil(statusHeight)));
         drawLessonCaption(lessons, aboveStatus);
-        if (!comparison->drawOverlays(viewInUiUnits) && display.colourMode == render::ColourMode::FalseColour)
+        if (!demo && !comparison->drawOverlays(viewInUiUnits) && display.colourMode == render::ColourMode::FalseColour)
             drawLegendOverlay(patches->legend(), viewInUiUnits);
 
         render::beginWindowFrame(width, height, viewport, kBackground);
-        comparison->draw(*patches, display, lastCamera, viewport, height);  // leaves the viewport on A
-        const std::vector<render::Viewport> views = comparison->views(viewport);
-        if (const std::optional<ProbePick>& pick = probePanel->picked())  // before other overlays: only the scene hides it
-            for (const render::Viewport& v : views) drawProbeMarker(lastCamera, v, height, pixelRatio, pick->point);
-        hemispherePanel->drawOverlay(lastCamera, views.front().aspect());  // the sky of the probe point, over A
+        if (demo) {
+            drawDemoPicture(*demo, *demoRenderer, lastCamera, viewport, pixelRatio, ui->uiScale());
+        } else {
+            comparison->draw(*patches, display, lastCamera, viewport, height);  // leaves the viewport on A
+            const std::vector<render::Viewport> views = comparison->views(viewport);
+            if (const std::optional<ProbePick>& pick = probePanel->picked())  // before other overlays: only the scene hides it
+                for (const render::Viewport& v : views) drawProbeMarker(lastCamera, v, height, pixelRatio, pick->point);
+            hemispherePanel->drawOverlay(lastCamera, views.front().aspect());  // the sky of the probe point, over A
+        }
         render::useWholeWindow(width, height);
         ui->render();
         if (capture || screenshotRequested) {
@@ -370,11 +381,10 @@ struct Lab::State {
         if (const std::optional<ProbeReading>& reading = probePanel->reading(); reading && reading->target)
             target = reading->target->name;
         return lesson::writeSession(
-            lesson::captureSession(live.snapshot(), orbit.camera(), orbit.pivot(), probePanel->picked(), target, display),
+            lesson::captureSession(live.snapshot(), demoView.sceneCamera().camera(), demoView.sceneCamera().pivot(),
+                                   probePanel->picked(), target, display),
             path);
     }
-
-
 
     void saveScreenshot(const render::ImageRgb8& image) {
         screenshotRequested = false;
@@ -389,6 +399,7 @@ struct Lab::State {
     Window window;
     render::GlInfo gl;
     render::OrbitCamera orbit;
+    DemoView demoView{orbit};  ///< puts the scene's camera aside while a lecture demo has the 3D view
     bool panelsVisible;
     SolverThread solverThread;
     LiveSolve live;
@@ -396,6 +407,7 @@ struct Lab::State {
     std::optional<ImGuiLayer> ui;
     std::optional<render::PatchRenderer> patches;
     std::optional<LabComparison> comparison;  ///< made with the renderer, released before it
+    std::optional<render::DemoRenderer> demoRenderer;
     std::shared_ptr<const Scene> materialsShown;
     std::string sceneShown;
     std::string titleShown;
@@ -486,5 +498,11 @@ std::shared_ptr<const Snapshot> Lab::secondSnapshot() const { return state_->liv
 const SolutionDifference& Lab::comparisonDifference() const { return state_->comparison->difference(); }
 std::vector<render::Viewport> Lab::sceneViews() const { return state_->comparison->views(state_->viewport); }
 std::optional<ProbeReading> Lab::secondProbeReading() const { return state_->probePanel->secondReading(); }
+void Lab::openDemo(const std::string& id) { state_->stage->openDemo(id); }
+void Lab::closeDemo() { state_->demosPanel->closeDemo(); }
+std::string Lab::activeDemo() const {
+    const LectureDemo* demo = state_->demoView.active();
+    return demo ? demo->id() : "";
+}
 
 } // namespace radiant::app

@@ -108,6 +108,13 @@ public:
     [[nodiscard]] std::vector<render::Viewport> sceneViews() const;
     /// The probe's reading of solution B at the picked point (comparison mode), as probeReading() of A.
     [[nodiscard]] std::optional<ProbeReading> secondProbeReading() const;
+    /// Shows a lecture demo (lesson::demoIds(): "point-source", ...) in the 3D view, its section open
+    /// in the sidebar, the scene's camera put aside; an unknown id does nothing.
+    void openDemo(const std::string& id);
+    /// Back to the scene, its camera as it was (the solve and the probe were never touched).
+    void closeDemo();
+    /// The id of the demo the 3D view shows, or empty.
+    [[nodiscard]] std::string activeDemo() const;
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.
     [[nodiscard]] std::string lessonError() const;
 

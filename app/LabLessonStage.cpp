@@ -17,6 +17,7 @@ namespace radiant::app {
 
 void LabLessonStage::loadScene(const std::string& nameOrPath) {
     awaitedScene_ = openScene(nameOrPath);
+    demos_.closeDemo();  // the step is about the scene: the 3D view shows it again
     awaitedAfter_ = live_.snapshot().meshGeneration;
     live_.send(command::LoadScene{awaitedScene_, MeshingOptions{patchArea_}});
 }
@@ -39,7 +40,7 @@ bool LabLessonStage::sceneReady() const {
 void LabLessonStage::openDemo(const std::string& id) {
     const std::vector<std::string>& ids = lesson::demoIds();
     const auto found = std::find(ids.begin(), ids.end(), id);
-    demos_.focus(static_cast<std::size_t>(found - ids.begin()));
+    demos_.focus(static_cast<std::size_t>(found - ids.begin()));  // and shows it in the 3D view
     sidebar_.focus("Lecture demos");
 }
 
@@ -59,6 +60,7 @@ void LabLessonStage::setMaterial(const lesson::SetMaterial& edit) {
 }
 
 void LabLessonStage::placeCamera(const lesson::PlaceCamera& place) {
+    demos_.closeDemo();  // the camera placed is the scene's
     if (place.home) {
         orbit_ = orbitFromHome(*live_.snapshot().scene, live_.snapshot().rays.get());
         return;
@@ -72,6 +74,7 @@ void LabLessonStage::placeCamera(const lesson::PlaceCamera& place) {
 }
 
 bool LabLessonStage::probe(const lesson::Probe& at) {
+    demos_.closeDemo();  // a probed point is shown on the scene
     const glm::dvec3 point{at.point[0], at.point[1], at.point[2]};
     std::vector<glm::dvec3> normals;
     if (at.normal) normals.push_back(glm::normalize(glm::dvec3{(*at.normal)[0], (*at.normal)[1], (*at.normal)[2]}));
@@ -90,6 +93,9 @@ bool LabLessonStage::probe(const lesson::Probe& at) {
     return false;
 }
 
-void LabLessonStage::openPanel(const std::string& title) { sidebar_.focus(title); }
+void LabLessonStage::openPanel(const std::string& title) {
+    if (title != "Lecture demos") demos_.closeDemo();  // another panel is about the scene
+    sidebar_.focus(title);
+}
 
 } // namespace radiant::app

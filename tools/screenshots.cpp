@@ -1,7 +1,7 @@
 // Screenshots for docs/screenshots that need a human's eye rather than a check: the hemisphere views,
-// integrals and lecture demos panel by panel, the Hemisphere panel in the lab, and the dome over a
-// point in the 3D view. A developer's tool, run under a display:
-//   xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" build/radiant_screenshots docs/screenshots
+// integrals and lecture demos panel by panel, the Hemisphere panel in the lab, the dome over a
+// point in the 3D view, and each lecture demo in the lab's 3D view at a projector's UI scale. A developer's tool, run under a display:
+//   xvfb-run -a -s "-screen 0 1600x1000x24 -noreset" build/radiant_screenshots docs/screenshots [demos]
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -14,6 +14,7 @@
 #include <numbers>
 #include <optional>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "app/Lab.h"
@@ -21,6 +22,7 @@
 #include "app/panels/HemispherePanel.h"
 #include "app/panels/IntegralsPanel.h"
 #include "app/panels/demos/LectureDemos.h"
+#include "app/lessons/Lesson.h"
 #include "app/ui/ImGuiLayer.h"
 #include "app/window/Window.h"
 #include "radiometry/hemicube/HemisphereProjection.h"
@@ -204,15 +206,49 @@ void dome3d(const std::filesystem::path& dir) {
     std::printf("wrote %s\n", file.string().c_str());
 }
 
+/// Each lecture demo in the lab's 3D view, 1600 x 1000 at UI scale 1.5 (a projector), its section
+/// open in the sidebar; the point-source demo with the pointer resting on the plane.
+void demos3d(const std::filesystem::path& dir) {
+    app::LabOptions options;
+    options.maxPatchArea = 0.05;
+    options.width = 1600;
+    options.height = 1000;
+    options.vsync = false;
+    options.uiScale = 1.5f;
+    options.runOnStart = false;
+    app::Lab lab(options);
+    for (int i = 0; i < 600 && !lab.snapshot()->mesh; ++i) lab.frame();
+    for (const std::string& id : app::lesson::demoIds()) {
+        lab.openDemo(id);
+        for (int i = 0; i < 4; ++i) lab.frame();
+        if (id == "point-source") {
+            const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), {-2.6, 0.0, 1.6});
+            lab.overrideMouse(glm::vec2(static_cast<float>(pixel.x), static_cast<float>(pixel.y)));
+        }
+        render::ImageRgb8 image;
+        for (int i = 0; i < 4; ++i) image = lab.frameAndCapture();
+        lab.overrideMouse(std::nullopt);
+        const std::filesystem::path file = dir / ("demo-3d-" + id + ".png");
+        render::writePng(image, file);
+        std::printf("wrote %s\n", file.string().c_str());
+    }
+    lab.closeDemo();
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
     const std::filesystem::path dir = argc > 1 ? argv[1] : "docs/screenshots";
     try {
         std::filesystem::create_directories(dir);
-        panels(dir);
-        labHemisphere(dir);
-        dome3d(dir);
+        // A second argument "demos" takes the lecture demos' 3D pictures alone.
+        const bool demosOnly = argc > 2 && std::string(argv[2]) == "demos";
+        if (!demosOnly) {
+            panels(dir);
+            labHemisphere(dir);
+            dome3d(dir);
+        }
+        demos3d(dir);
     } catch (const std::exception& e) {
         std::fprintf(stderr, "radiant_screenshots: %s\n", e.what());
         return 1;

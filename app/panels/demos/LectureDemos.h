@@ -2,10 +2,11 @@
 // The radiometry lecture's demos (K. Bala, "Radiometry and Rendering Equation", Cornell 2004), one
 // panel each, one file each: sliders, the live numbers with their units, and the formula behind them.
 // Each demo's numbers come from a plain function of its settings (radiometry/ does the physics), so
-// the tests check them against docs/reference.md's closed forms.
+// the tests check them against docs/reference.md's closed forms. Each also draws in the 3D view
+// (LectureDemo.h): its picture, one more member defined in the demo's file, uses the same numbers.
 #include <vector>
 
-#include "app/panels/Panel.h"
+#include "app/panels/demos/LectureDemo.h"
 #include "radiometry/units/Quantity.h"
 
 namespace radiant::app {
@@ -21,10 +22,12 @@ struct PointSourceNumbers {
 };
 PointSourceNumbers pointSourceNumbers(const PointSourceSettings& s);
 
-class PointSourceDemo final : public Panel {
+class PointSourceDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: point source over a plane"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "point-source"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
     PointSourceSettings settings;
 };
@@ -34,10 +37,12 @@ struct DiffuseEmitterSettings { double radianceW_m2sr = 100, areaM2 = 1; };
 struct DiffuseEmitterNumbers { Power power; Radiosity exitance; SolidAngle projectedSolidAngle; };
 DiffuseEmitterNumbers diffuseEmitterNumbers(const DiffuseEmitterSettings& s);
 
-class DiffuseEmitterDemo final : public Panel {
+class DiffuseEmitterDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: diffuse emitter"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "diffuse-emitter"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
     DiffuseEmitterSettings settings;
 };
@@ -54,12 +59,14 @@ struct SunPlanetNumbers {
 struct SunNumbers { Radiance radiance; Length sunRadius; SunPlanetNumbers earth, mars; };
 SunNumbers sunNumbers();
 
-class SunDemo final : public Panel {
+class SunDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: the Sun, Earth and Mars"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "sun"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
-    double distanceAu = 1.0;  ///< a third planet the slider moves
+    double distanceAu = 5.2;  ///< a third planet the slider moves, from Jupiter's distance
 };
 
 // --- Solid angle of a square against A / R^2. ---
@@ -67,10 +74,12 @@ struct SquareSolidAngleSettings { double sideM = 1, distanceM = 2; };
 struct SquareSolidAngleNumbers { SolidAngle exact; SolidAngle smallArea; double relativeError = 0; };
 SquareSolidAngleNumbers squareSolidAngleNumbers(const SquareSolidAngleSettings& s);
 
-class SquareSolidAngleDemo final : public Panel {
+class SquareSolidAngleDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: solid angle of a square"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "square-solid-angle"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
     SquareSolidAngleSettings settings;
 };
@@ -80,10 +89,12 @@ struct RegularSolidNumbers { int faces = 12; SolidAngle perFace; SolidAngle poly
 /// 4 pi / n, and the same face's solid angle from its vertices (Van Oosterom & Strackee).
 RegularSolidNumbers regularSolidNumbers(int faces);
 
-class DodecahedronDemo final : public Panel {
+class DodecahedronDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: one steradian (dodecahedron)"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "dodecahedron"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
     int faceChoice = 3;  ///< index into 4, 6, 8, 12, 20
 };
@@ -97,10 +108,12 @@ struct RadianceIrradianceNumbers {
 };
 RadianceIrradianceNumbers radianceIrradianceNumbers(const RadianceIrradianceSettings& s);
 
-class RadianceIrradianceDemo final : public Panel {
+class RadianceIrradianceDemo final : public LectureDemo {
 public:
     [[nodiscard]] const char* title() const override { return "Demo: radiance vs irradiance"; }
-    [[nodiscard]] bool openByDefault() const override { return false; }
+    [[nodiscard]] const char* id() const override { return "radiance-irradiance"; }
+    [[nodiscard]] render::DemoDrawing picture(const std::optional<PickRay>& cursor) const override;
+    [[nodiscard]] DemoFraming framing() const override;
     void draw() override;
     RadianceIrradianceSettings settings;
 };
