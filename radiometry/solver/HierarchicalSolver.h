@@ -13,11 +13,13 @@
 // link casts its own visibility rays (an unbiased estimate). To scale by element count, leaves
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
-// cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
-// pulled up as the area-weighted mean of the children. The scene's punctual lights are a source
+// cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), each link's
+// with its variation over its receiver (the kernel at the receiver's children, bilinear below them:
+// ReceiverShape.h), radiosity pulled up as the area-weighted mean of the children. The scene's punctual lights are a source
 // term per element: B = E + rho (H_e + gathered), H_e their direct irradiance averaged over the
 // element with shadow rays, computed as elements appear (HierarchicalDirectLight.cpp). What a patch and a probe point show is gathered
 // at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -125,6 +127,7 @@ private:
     struct NewLink {
         Link link;
         float share = 0;  ///< its visible share (the link's formFactor is F times it)
+        std::array<float, 4> shape{};  ///< see linkShape_
     };
     std::size_t makeLink(ElementIndex receiver, ElementIndex source, std::vector<NewLink>& out) const;
     [[nodiscard]] double linkError(const Link& link) const;
@@ -177,6 +180,10 @@ private:
     int visibilityRays_ = 0;
     std::vector<Link> links_;
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
+    /// Per link, its form factor over each of the receiver's four children-to-be (their mean is the
+    /// link's formFactor): push-pull hands each child its own (ReceiverShape.h).
+    std::vector<std::array<float, 4>> linkShape_;
+    std::vector<Rgb> gatheredShape_;  ///< per element, 4 irradiances (gather(), then pushed in place)
     std::vector<Rgb> surfaceReflectance_;
     std::vector<Rgb> surfaceExitance_;
     std::shared_ptr<const RayCaster> sceneRays_;  ///< see rayCaster()
@@ -208,7 +215,6 @@ private:
     std::vector<std::vector<NewLink>> linksPerThread_;
     std::vector<NewLink> produced_;
     std::vector<std::size_t> raysPerThread_;
-    std::vector<std::vector<Rgb>> gatherPerThread_;
     std::vector<Rgb> pushedIrradiance_;
     std::size_t rays_ = 0;
     IterationStats stats_;
