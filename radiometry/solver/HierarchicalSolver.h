@@ -151,10 +151,12 @@ private:
     template <class Visibility>
     void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
                        std::vector<GatherTerm>& out) const;
-    /// Appends weight x F(x -> source), or the same for the source's children where it is large for its
-    /// distance from x (area over squared distance above kSourceExpansion).
-    void expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
-                      std::vector<GatherTerm>& out) const;
+    /// Appends weight x F(x -> source) x visibility(link, source, its polygon), or the same for the
+    /// source's children where it is large for its distance from x (area over squared distance above
+    /// kSourceExpansion).
+    template <class Visibility>
+    void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                      Visibility& visibility, std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
