@@ -94,6 +94,8 @@ protected:
     virtual void afterGather() {}
     /// Called after the per-patch solution was refreshed.
     virtual void afterSolutionMapped() {}
+    /// Lets refinement resume after the leaf rows stopped it (the importance changed with the view).
+    void resumeRefinement() { linksSettled_ = false; }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
 
@@ -147,16 +149,17 @@ private:
     /// Links grouped by receiver (HierarchicalGather.cpp).
     void indexLinksByReceiver();
     /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors (`everyLink`:
-    /// also those whose rays found them hidden).
+    /// also those whose rays found them hidden; `exact`: Lambert's kernel even where the far field
+    /// would do).
     template <class Visibility>
     void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
-                       std::vector<GatherTerm>& out) const;
+                       bool exact, std::vector<GatherTerm>& out) const;
     /// Appends weight x F(x -> source) x visibility(link, source, its polygon), or the same for the
     /// source's children where it is large for its distance from x (area over squared distance above
     /// kSourceExpansion).
     template <class Visibility>
     void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
-                      Visibility& visibility, std::vector<GatherTerm>& out) const;
+                      Visibility& visibility, bool exact, std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
@@ -211,6 +214,7 @@ private:
     std::vector<GatherTerm> leafRows_;
     std::vector<Rgb> leafIrradiance_;
     bool leafRowsCurrent_ = false;
+    bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
