@@ -206,9 +206,12 @@ void forGaussPoints(const PatchPolygon& polygon, int n, Visit&& visit) {
 }
 
 /// The unoccluded kernel of a link receiver <- source: `mean`, F(receiver -> source); `spread`, how
-/// much the point kernel varies over the receiver (the error of pushing one value down to all of it).
+/// much the point kernel varies over the receiver (the error of pushing one value down to all of it);
+/// `atChildren`, the kernel's mean over each of the receiver's four children-to-be (childCentroids'
+/// order), scaled so that their average is `mean`: what push-pull hands each child (ReceiverShape.h).
 struct LinkKernel {
     double mean = 0, spread = 0;
+    std::array<double, 4> atChildren{};
 };
 
 /// The exact kernel (exact over the source) at the centroids of the receiver's four children: their
@@ -229,8 +232,11 @@ inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
     const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
     const double atCentroid = pointToElementFormFactor(p.centroid, p.normal, q, far);
     double sum = 0, lowest = atCentroid, highest = atCentroid;
-    for (const glm::dvec3& x : childCentroids(p)) {
-        const double f = pointToElementFormFactor(x, p.normal, q, far);
+    std::array<double, 4> atChildren{};
+    const std::array<glm::dvec3, 4> children = childCentroids(p);
+    for (std::size_t c = 0; c < children.size(); ++c) {
+        const double f = pointToElementFormFactor(children[c], p.normal, q, far);
+        atChildren[c] = f;
         sum += f;
         lowest = std::min(lowest, f);
         highest = std::max(highest, f);
@@ -244,7 +250,9 @@ inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
             highest = std::max(highest, atCorner);
         }
     }
-    return {mean, highest - lowest};
+    // The children's values keep the link's mean (the Gauss rule's where it replaced the 4-point one).
+    for (double& f : atChildren) f = sum > 0 ? f * 4 * mean / sum : mean;
+    return {mean, highest - lowest, atChildren};
 }
 
 /// F(receiver -> source) unoccluded, for a receiver small against the link it inherits: the 3 x 3

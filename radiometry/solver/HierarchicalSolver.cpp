@@ -11,6 +11,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/solver/HierarchicalFormFactor.h"
 #include "radiometry/solver/HierarchicalParallel.h"
+#include "radiometry/solver/ReceiverShape.h"
 #include "radiometry/solver/SolverFactories.h"
 
 namespace radiant {
@@ -63,7 +64,6 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
 
     splitsPerThread_.resize(threads_);
     linksPerThread_.resize(threads_);
-    gatherPerThread_.resize(threads_);
     if (refinement.maxLeafArea > 0) splitLeavesLargerThan(refinement.maxLeafArea);
     linkRoots(progress);  // sorted afterwards: the order does not depend on scheduling
     setLeavesToEmission();
@@ -104,6 +104,7 @@ void HierarchicalSolver::linkRoots(Progress* progress) {
     for (const NewLink& m : made) {
         links_.push_back(m.link);
         linkShare_.push_back(m.share);
+        linkShape_.push_back(m.shape);
     }
 }
 
@@ -111,7 +112,7 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
     if (!hierarchical::facing(p, q)) return 0;
-    const auto [f, spread] = hierarchical::linkKernel(p, q);
+    const auto [f, spread, atChildren] = hierarchical::linkKernel(p, q);
     if (f <= 0) {
         // No sample point is in front of the source, yet part of the receiver is: the link carries
         // nothing yet, and refinement finds the part that does see the source.
@@ -119,7 +120,7 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
         for (const glm::dvec3& corner : p.corners())
             bound = std::max(bound, hierarchical::pointToElementFormFactor(0.999 * corner + 0.001 * p.centroid,
                                                                            p.normal, q));
-        if (bound > 0) out.push_back({{receiver, source, 0.0f, static_cast<float>(bound)}, 0.0f});
+        if (bound > 0) out.push_back({{receiver, source, 0.0f, static_cast<float>(bound)}, 0.0f, {}});
         return 0;
     }
     // Every link casts its own rays, refined or not, in two independent sets: one tells the oracle
@@ -140,8 +141,10 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     // Fully hidden: only a gap the rays missed could carry light.
     const bool partial = visible > 0 && visible < 1;
     const double uncertainty = partial ? std::max(f, spread) : visible <= 0 ? kHiddenErrorWeight * spread : spread;
+    std::array<float, 4> shape{};
+    for (std::size_t c = 0; c < shape.size(); ++c) shape[c] = static_cast<float>(atChildren[c] * share);
     out.push_back({{receiver, source, static_cast<float>(f * share), static_cast<float>(partial ? -uncertainty : uncertainty)},
-                   static_cast<float>(share)});
+                   static_cast<float>(share), shape});
     return rays;
 }
 
@@ -244,6 +247,7 @@ std::size_t HierarchicalSolver::refine() {
             if (made.link.receiver != kNoElement) {
                 links_.push_back(made.link);
                 linkShare_.push_back(made.share);
+                linkShape_.push_back(made.shape);
                 ++created;
             }
     }
@@ -252,10 +256,12 @@ std::size_t HierarchicalSolver::refine() {
         for (std::size_t i = 0; i < links_.size(); ++i)
             if (links_[i].receiver != kNoElement) {
                 links_[kept] = links_[i];
+                linkShape_[kept] = linkShape_[i];
                 linkShare_[kept++] = linkShare_[i];
             }
         links_.resize(kept);
         linkShare_.resize(kept);
+        linkShape_.resize(kept);
         patchRowsCurrent_ = false;
         leafRowsCurrent_ = false;
     }
@@ -265,37 +271,43 @@ std::size_t HierarchicalSolver::refine() {
 }
 
 void HierarchicalSolver::gather() {
+    // By receiver (the links grouped by indexLinksByReceiver): each element's sums in link order, the
+    // same bit for bit however the chunks are scheduled. Per element, the irradiance over each of its
+    // four children-to-be (ReceiverShape.h); the element's mean is their average.
     const std::size_t n = tree_.size();
-    // One contiguous block of links per accumulator (not per thread): the sums come out bit for bit
-    // the same however the blocks are scheduled.
-    const std::size_t block = (links_.size() + threads_ - 1) / threads_;
-    for (auto& buffer : gatherPerThread_) buffer.assign(n, Rgb(0.0));
-    const auto& radiosity = tree_.radiosity();
-    parallelChunks(links_.size(), threads_, std::max<std::size_t>(block, 1),
-                   [&](std::size_t from, std::size_t to, unsigned) {
-                       Rgb* gathered = gatherPerThread_[from / std::max<std::size_t>(block, 1)].data();
-                       for (std::size_t i = from; i < to; ++i) {
-                           const Link& link = links_[i];
-                           gathered[link.receiver] += static_cast<double>(link.formFactor) * radiosity[link.source];
-                       }
-                   });
+    gatheredShape_.resize(hierarchical::kShapeValues * n);
     auto& own = tree_.gatheredIrradiance();
-    std::swap(own, gatherPerThread_[0]);  // the old array becomes next step's scratch space
-    for (std::size_t t = 1; t < gatherPerThread_.size(); ++t)
-        for (std::size_t e = 0; e < n; ++e) own[e] += gatherPerThread_[t][e];
+    own.resize(n);
+    const auto& radiosity = tree_.radiosity();
+    parallelChunks(n, threads_, 1024, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = from; e < to; ++e) {
+            std::array<Rgb, hierarchical::kShapeValues> sum{Rgb(0.0), Rgb(0.0), Rgb(0.0), Rgb(0.0)};
+            for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+                const std::uint32_t i = receiverLinks_[k];
+                const Rgb& b = radiosity[links_[i].source];
+                for (std::size_t c = 0; c < sum.size(); ++c) sum[c] += static_cast<double>(linkShape_[i][c]) * b;
+            }
+            std::copy(sum.begin(), sum.end(), gatheredShape_.begin() + static_cast<std::ptrdiff_t>(hierarchical::kShapeValues * e));
+            own[e] = 0.25 * (sum[0] + sum[1] + sum[2] + sum[3]);
+        }
+    });
 }
 
 double HierarchicalSolver::pushPull() {
     const std::size_t n = tree_.size();
     auto& radiosity = tree_.radiosity();
-    const auto& gathered = tree_.gatheredIrradiance();
     pushedIrradiance_.resize(n);
     lightNewElements();
     Rgb change(0.0), emitted(0.0);
-    // Push: parents precede children, so one forward sweep hands every leaf its ancestors' irradiance.
+    // Push: parents precede children, so one forward sweep hands every leaf its ancestors' irradiance,
+    // each ancestor's over the part the leaf covers (ReceiverShape.h), in place in gatheredShape_.
     for (ElementIndex e = 0; e < n; ++e) {
         const ElementIndex parent = tree_.parent(e);
-        pushedIrradiance_[e] = gathered[e] + (parent == kNoElement ? Rgb(0.0) : pushedIrradiance_[parent]);
+        Rgb* shape = gatheredShape_.data() + hierarchical::kShapeValues * e;
+        if (parent != kNoElement)
+            hierarchical::addChildShape(gatheredShape_.data() + hierarchical::kShapeValues * parent,
+                                        tree_.polygon(parent).count == 4, e - tree_.firstChild(parent), shape);
+        pushedIrradiance_[e] = 0.25 * (shape[0] + shape[1] + shape[2] + shape[3]);
         if (!tree_.isLeaf(e)) continue;
         const std::uint32_t s = tree_.surface(e);
         const Rgb& irradiance = leafRowsCurrent_ ? leafIrradiance_[e] : pushedIrradiance_[e];
@@ -350,11 +362,17 @@ IterationStats HierarchicalSolver::step() {
     const auto start = std::chrono::steady_clock::now();
     IterationStats stats;
     stats.iteration = stats_.iteration + 1;
-    stats.linksRefined = refine();
+    stats.linksRefined = linksSettled_ ? 0 : refine();
     // The rows cost a form factor per leaf and per link of its chain: they are built once refinement
-    // has settled (a step that made no links), and until then push-pull pushes constants.
+    // has settled (a step that made no links), and until then push-pull pushes each link's shape. Once
+    // built, the links stay until a material or the view changes: the rows move B by up to 1% of the
+    // emitted power, the oracle then asked for a few dozen links, which dropped the rows, and the
+    // Cornell box's default solve to 1e-4 rebuilt them six times (9 s loaded instead of 1 s).
     const bool settled = stats.linksRefined == 0;
-    if (settled && !leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) buildLeafRows();
+    if (settled && !leafRowsCurrent_ && tree_.leafCount() <= kMaxLeavesWithRows) {
+        buildLeafRows();
+        linksSettled_ = true;
+    }
     if (leafRowsCurrent_) gatherLeafRows();
     gather();
     stats.residual = pushPull();
@@ -380,9 +398,11 @@ void HierarchicalSolver::setMaterial(std::size_t surface, const Rgb& reflectance
     }
     surfaceReflectance_[surface] = reflectance;
     surfaceExitance_[surface] = exitance.value();
+    linksSettled_ = false;
 }
 
 void HierarchicalSolver::reset() {
+    linksSettled_ = false;
     setLeavesToEmission();
     stats_ = {};
     mapSolution(false);
@@ -393,8 +413,8 @@ std::size_t HierarchicalSolver::bytes() const {
     for (const auto& b : splitsPerThread_) perThread += b.capacity() * sizeof(Split);
     for (const auto& b : linksPerThread_) perThread += b.capacity() * sizeof(NewLink);
     perThread += produced_.capacity() * sizeof(NewLink);
-    for (const auto& b : gatherPerThread_) perThread += b.capacity() * sizeof(Rgb);
     return tree_.bytes() + links_.capacity() * sizeof(Link) + linkShare_.capacity() * sizeof(float) + pushedIrradiance_.capacity() * sizeof(Rgb) +
+           linkShape_.capacity() * sizeof(linkShape_[0]) + gatheredShape_.capacity() * sizeof(Rgb) +
            importance_.capacity() * sizeof(double) + patchElement_.capacity() * sizeof(ElementIndex) +
            patches_.capacity() * sizeof(PatchSample) + solution_.capacity() * sizeof(Rgb) + perThread +
            (receiverLinkBegin_.capacity() + receiverLinks_.capacity()) * sizeof(std::uint32_t) +

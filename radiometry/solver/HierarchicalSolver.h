@@ -13,11 +13,13 @@
 // link casts its own visibility rays (an unbiased estimate). To scale by element count, leaves
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
 // One step() = refine where needed, gather H_p = sum F_pq B_q over each element's links (both
-// cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), radiosity
-// pulled up as the area-weighted mean of the children. The scene's punctual lights are a source
+// cores), then push-pull: irradiance pushed down to the leaves (B = E + rho H there), each link's
+// with its variation over its receiver (the kernel at the receiver's children, bilinear below them:
+// ReceiverShape.h), radiosity pulled up as the area-weighted mean of the children. The scene's punctual lights are a source
 // term per element: B = E + rho (H_e + gathered), H_e their direct irradiance averaged over the
 // element with shadow rays, computed as elements appear (HierarchicalDirectLight.cpp). What a patch and a probe point show is gathered
 // at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
+#include <array>
 #include <cstddef>
 #include <memory>
 #include <span>
@@ -92,6 +94,8 @@ protected:
     virtual void afterGather() {}
     /// Called after the per-patch solution was refreshed.
     virtual void afterSolutionMapped() {}
+    /// Lets refinement resume after the leaf rows stopped it (the importance changed with the view).
+    void resumeRefinement() { linksSettled_ = false; }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
 
@@ -125,6 +129,7 @@ private:
     struct NewLink {
         Link link;
         float share = 0;  ///< its visible share (the link's formFactor is F times it)
+        std::array<float, 4> shape{};  ///< see linkShape_
     };
     std::size_t makeLink(ElementIndex receiver, ElementIndex source, std::vector<NewLink>& out) const;
     [[nodiscard]] double linkError(const Link& link) const;
@@ -144,14 +149,17 @@ private:
     /// Links grouped by receiver (HierarchicalGather.cpp).
     void indexLinksByReceiver();
     /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors (`everyLink`:
-    /// also those whose rays found them hidden).
+    /// also those whose rays found them hidden; `exact`: Lambert's kernel even where the far field
+    /// would do).
     template <class Visibility>
     void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
-                       std::vector<GatherTerm>& out) const;
-    /// Appends weight x F(x -> source), or the same for the source's children where it is large for its
-    /// distance from x (area over squared distance above kSourceExpansion).
-    void expandSource(ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
-                      std::vector<GatherTerm>& out) const;
+                       bool exact, std::vector<GatherTerm>& out) const;
+    /// Appends weight x F(x -> source) x visibility(link, source, its polygon), or the same for the
+    /// source's children where it is large for its distance from x (area over squared distance above
+    /// kSourceExpansion).
+    template <class Visibility>
+    void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
+                      Visibility& visibility, bool exact, std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
@@ -177,6 +185,10 @@ private:
     int visibilityRays_ = 0;
     std::vector<Link> links_;
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
+    /// Per link, its form factor over each of the receiver's four children-to-be (their mean is the
+    /// link's formFactor): push-pull hands each child its own (ReceiverShape.h).
+    std::vector<std::array<float, 4>> linkShape_;
+    std::vector<Rgb> gatheredShape_;  ///< per element, 4 irradiances (gather(), then pushed in place)
     std::vector<Rgb> surfaceReflectance_;
     std::vector<Rgb> surfaceExitance_;
     std::shared_ptr<const RayCaster> sceneRays_;  ///< see rayCaster()
@@ -202,13 +214,13 @@ private:
     std::vector<GatherTerm> leafRows_;
     std::vector<Rgb> leafIrradiance_;
     bool leafRowsCurrent_ = false;
+    bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
     std::vector<std::vector<NewLink>> linksPerThread_;
     std::vector<NewLink> produced_;
     std::vector<std::size_t> raysPerThread_;
-    std::vector<std::vector<Rgb>> gatherPerThread_;
     std::vector<Rgb> pushedIrradiance_;
     std::size_t rays_ = 0;
     IterationStats stats_;

@@ -36,6 +36,7 @@ bool ImportanceSolver::setView(const Scene& scene, const View& view) {
     // Importance restarts from the new emission; radiosity and links stay, and the next steps
     // refine where the new view needs it and gather again.
     setImportanceToEmission();
+    resumeRefinement();
     afterSolutionMapped();
     return true;
 }

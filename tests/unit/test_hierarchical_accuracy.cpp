@@ -6,8 +6,10 @@
 
 #include "tests/support/CatalogViewFactors.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -166,6 +168,63 @@ TEST_CASE("hierarchical furnace: every leaf within 2% of E / (1 - rho) at a mode
     CHECK(rms < 0.005);
     CHECK(worst < 0.02);
     CHECK(worstPatch < 0.02);
+}
+
+TEST_CASE("hierarchical push: leaves under a coarse link get their own share of its irradiance") {
+    // A unit lamp square at z = 0 and a receiver square 1 above it, offset by (1/2, 1/2): the
+    // receiver's irradiance falls from its corner over the lamp to the far one. With a tolerance that
+    // refines nothing, the receiver's leaves all hang under the one root link; each must still get its
+    // own mean of the exact kernel (closed form, averaged over the leaf), not the link's mean for the
+    // whole receiver, which a constant push gave every leaf: 67% (quarters) and 133% (sixteenths) off
+    // at the worst leaf, against 0.3% now.
+    const double rho = 0.5;
+    Scene scene;
+    scene.name = "offset plates";
+    scene.materials = {{"lamp", Rgb(0.0), ExitanceRgb(Rgb(1.0))}, {"receiver", Rgb(rho), ExitanceRgb{}}};
+    scene.surfaces.push_back({"lamp", 0, {quadFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}, "test"});
+    scene.surfaces.push_back(
+        {"receiver", 1, {quadFace({{0.5, 0.5, 1}, {0.5, 1.5, 1}, {1.5, 1.5, 1}, {1.5, 0.5, 1}})}, "test"});
+    const auto exactAt = [](double x, double y) {
+        return radiant::test::overRectangle(radiant::test::pointToCornerRectangle, -x, 1 - x, -y, 1 - y, 1);
+    };
+    const PatchMesh mesh = meshed(scene, 0.1);
+    // Leaves of 1/4 (the root link's children) and 1/16 (its grandchildren): the link's kernel at its
+    // receiver's children, then the bilinear through those four values.
+    for (const double leafArea : {0.3, 0.07}) {
+        CAPTURE(leafArea);
+        SolverOptions options;
+        options.linkEpsilon = 1e3;
+        HierarchicalSolver solver(scene, mesh, options, nullptr, HierarchicalRefinement{leafArea});
+        for (int k = 0; k < 20 && solver.step().residual > 1e-9; ++k) {
+        }
+        const ElementTree& tree = solver.elements();
+        REQUIRE(solver.links().size() == 2);  // the roots' two links, one each way: nothing refined
+        const Link& link = tree.surface(solver.links()[0].receiver) == 1 ? solver.links()[0] : solver.links()[1];
+        double constantWorst = 0;  // every leaf given the link's mean, as a constant push does
+        double worst = 0, mean = 0, exactMean = 0;
+        for (const ElementIndex e : tree.leaves()) {
+            if (tree.surface(e) != 1) continue;
+            // The leaf's mean of the closed form, by a 24 x 24 midpoint rule over it.
+            const PatchPolygon& leaf = tree.polygon(e);
+            double x0 = 2, x1 = -1, y0 = 2, y1 = -1;
+            for (const glm::dvec3& v : leaf.corners()) {
+                x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+            }
+            double exact = 0;
+            constexpr int kSteps = 24;
+            for (int i = 0; i < kSteps; ++i)
+                for (int j = 0; j < kSteps; ++j)
+                    exact += exactAt(x0 + (i + 0.5) * (x1 - x0) / kSteps, y0 + (j + 0.5) * (y1 - y0) / kSteps) / (kSteps * kSteps);
+            const double irradiance = tree.radiosity()[e].x / rho;
+            worst = std::max(worst, std::abs(irradiance / exact - 1));
+            mean += tree.area(e) * irradiance;
+            constantWorst = std::max(constantWorst, std::abs(link.formFactor / exact - 1));
+            exactMean += tree.area(e) * exact;
+        }
+        MESSAGE("leaves of " << leafArea << " m^2: worst leaf " << worst << ", receiver mean " << mean << " (exact " << exactMean << "), constant push's worst " << constantWorst);
+        CHECK(worst < 0.01);
+        CHECK(mean == doctest::Approx(exactMean).scale(0).epsilon(0.002));
+    }
 }
 
 } // TEST_SUITE
