@@ -63,9 +63,13 @@ constexpr double kNearInDiameters = 1.5;
 /// source's); a shot carrying less gets proportionally fewer (at least the first 4): the error a
 /// shot leaves grows with its power, and the many weak shots' noise averages out over receivers
 /// lit by all of them. Without that, 64 rays at every penumbra of every block shot made the Cornell
-/// box at 10k patches 5.6x slower to residual 1e-2 (1.6 -> 9.0 s).
+/// box at 10k patches 5.6x slower to residual 1e-2 (1.6 -> 9.0 s). At 0.25 the default 7 x 7 blocks
+/// (2,170 patches, 62 shooters) shoot too few times for that noise to average: the blocks' gap was
+/// 6.0% off converged Gauss-Seidel per patch (41% worst) on the short block's side facing the tall
+/// one and 1.5% at the accuracy bench's point there; at 0.02, 1.4% / 9.5% and 0.12%, the solve
+/// 0.85 -> 1.07 s (tests/unit/test_progressive_gap.cpp).
 constexpr int kPenumbraRayFactor = 4;
-constexpr double kFullPenumbraShare = 0.25;
+constexpr double kFullPenumbraShare = 0.02;
 
 /// A member weighs the receiver's kernel by its centroid's point kernel (in the ratio of
 /// unoccludedFromShot) once the receiver's centroid is this many of the member's areas away,
