@@ -17,6 +17,7 @@
 #include "app/LabComparison.h"
 #include "app/LabLessonStage.h"
 #include "app/LabScene.h"
+#include "app/SnapshotToRenderer.h"
 #include "app/lessons/LessonCaption.h"
 #include "app/lessons/SessionFile.h"
 #include "app/panels/InfoPanel.h"
@@ -196,15 +197,7 @@ struct Lab::State {
         live.refresh();
         const Snapshot& s = live.snapshot();
         if (!s.scene || !s.mesh) return;
-        patches->setMesh(*s.scene, *s.mesh, s.meshGeneration);
-        if (s.scene != materialsShown) {
-            patches->setMaterials(*s.scene);
-            materialsShown = s.scene;
-        }
-        patches->setRadiosity(s.radiosity, s.generation, s.stats.shooter);
-        patches->setLinks(s.linkSegments);
-        patches->setFocusLinks(s.focusLinkSegments);
-        patches->setImportance(s.importance);
+        streamSnapshotToRenderer(s, *patches, materialsShown);
         comparison->stream(display, *patches);
         if (s.scene->name != sceneShown) {
             // The home view casts with the scene's one ray caster, which the solver thread builds

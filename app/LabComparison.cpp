@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <string>
 
+#include "app/SnapshotToRenderer.h"
 #include "app/ui/ComparisonColours.h"
 #include "app/ui/LegendOverlay.h"
 #include "render/GlContext.h"
@@ -75,15 +76,7 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     const Snapshot& b = *live_.secondCurrent;
     if (b.scene && b.mesh) {
         if (!second_) second_.emplace();
-        second_->setMesh(*b.scene, *b.mesh, b.meshGeneration);
-        if (b.scene != secondMaterials_) {
-            second_->setMaterials(*b.scene);
-            secondMaterials_ = b.scene;
-        }
-        second_->setRadiosity(b.radiosity, b.generation, b.stats.shooter);
-        second_->setLinks(b.linkSegments);
-        second_->setFocusLinks(b.focusLinkSegments);
-        second_->setImportance(b.importance);
+        streamSnapshotToRenderer(b, *second_, secondMaterials_);
         // One colour scale for both halves: false colour's automatic range is A's.
         render::DisplaySettings settings = display;
         if (settings.falseColourMaxW_m2 <= 0) settings.falseColourMaxW_m2 = static_cast<float>(first.legend().maxW_m2);

@@ -1,8 +1,10 @@
 #pragma once
 // Topology checks of a PatchMesh for the meshing tests: sharing of vertices (Euler characteristic)
-// and T-junctions, by vertex ids and positions, never by the mesher's own bookkeeping.
+// and T-junctions, by vertex ids and positions, never by the mesher's own bookkeeping; and the
+// one-surface scenes those tests mesh.
 #include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <map>
 #include <set>
 #include <tuple>
@@ -12,8 +14,26 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/scene/Scene.h"
 
 namespace radiant::test {
+
+/// A face through these corners (counter-clockwise about its normal), its area and normal derived.
+inline Face makeFace(std::initializer_list<glm::dvec3> corners) {
+    Face face;
+    face.vertices = corners;
+    face.updateGeometry();
+    return face;
+}
+
+/// One grey surface made of `faces`.
+inline Scene sceneOf(std::vector<Face> faces) {
+    Scene scene;
+    scene.name = "test";
+    scene.materials = {{"grey", Rgb{0.5}, ExitanceRgb{}}};
+    scene.surfaces.push_back({"surface", 0, std::move(faces), "test"});
+    return scene;
+}
 
 /// V - E + F of one surface's patches, counting vertex ids and undirected edges by vertex ids.
 /// A duplicated seam vertex or a T-junction changes it, so it tests sharing, not just geometry.

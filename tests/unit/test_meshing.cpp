@@ -20,23 +20,10 @@
 using namespace radiant;
 using radiant::test::countTJunctions;
 using radiant::test::eulerCharacteristic;
+using radiant::test::makeFace;
+using radiant::test::sceneOf;
 
 namespace {
-
-Face makeFace(std::initializer_list<glm::dvec3> corners) {
-    Face face;
-    face.vertices = corners;
-    face.updateGeometry();
-    return face;
-}
-
-Scene sceneOf(std::vector<Face> faces) {
-    Scene scene;
-    scene.name = "test";
-    scene.materials = {{"grey", Rgb{0.5}, ExitanceRgb{}}};
-    scene.surfaces.push_back({"surface", 0, std::move(faces), "test"});
-    return scene;
-}
 
 double surfacePatchArea(const PatchMesh& mesh, std::size_t surface) {
     double sum = 0;
