@@ -7,10 +7,10 @@
 #include <cstdio>
 #include <string>
 
+#include "app/ui/HorizontalColourBar.h"
+
 namespace radiant::app {
 namespace {
-
-constexpr const char* kUnit = "W/m\xC2\xB2";  // UTF-8 superscript two: the UI font has it
 
 ImU32 colourU32(const glm::dvec3& srgb) {
     return ImGui::GetColorU32(ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y),
@@ -135,7 +135,6 @@ void DisplayPanel::rekey(render::DisplaySettings& settings) {
 }
 
 void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
     const float font = ImGui::GetFontSize();
     const ImVec2 origin = ImGui::GetCursorScreenPos();
     const float margin = font * 0.9f;  // half a label either side, so end labels stay in the panel
@@ -144,31 +143,11 @@ void DisplayPanel::drawLegend(const render::ColourLegend& legend) const {
     const ImVec2 barLo(origin.x + margin, origin.y + font * 0.2f);
     const ImVec2 barHi(barLo.x + width, barLo.y + barHeight);
 
-    // The colour map as many narrow linear pieces: viridis is smooth enough that 32 are exact to the eye.
-    constexpr int kPieces = 32;
-    for (int i = 0; i < kPieces; ++i) {
-        const double t0 = i / static_cast<double>(kPieces), t1 = (i + 1) / static_cast<double>(kPieces);
-        const float x0 = barLo.x + width * static_cast<float>(t0), x1 = barLo.x + width * static_cast<float>(t1);
-        const ImU32 left = colourU32(render::viridis(t0)), right = colourU32(render::viridis(t1));
-        draw->AddRectFilledMultiColor(ImVec2(x0, barLo.y), ImVec2(x1 + 0.5f, barHi.y), left, right, right, left);
-    }
-    draw->AddRect(barLo, barHi, ImGui::GetColorU32(ImGuiCol_Border));
-
-    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
-    float lastLabelEnd = -1e9f;
-    for (const double tick : legend.ticksW_m2) {
-        const float x = barLo.x + width * static_cast<float>(legend.position(tick));
-        draw->AddLine(ImVec2(x, barHi.y), ImVec2(x, barHi.y + font * 0.3f), text);
-        const std::string label = render::formatLegendTick(tick);
-        const float labelWidth = ImGui::CalcTextSize(label.c_str()).x;
-        const float left = x - labelWidth / 2;
-        if (left < lastLabelEnd + font * 0.3f) continue;  // crowded: keep the tick, drop its number
-        draw->AddText(ImVec2(left, barHi.y + font * 0.35f), text, label.c_str());
-        lastLabelEnd = left + labelWidth;
-    }
+    // Viridis is smooth enough that 32 linear pieces are exact to the eye.
+    drawHorizontalColourBar({barLo, barHi, 32, 0.3f, true},
+                            [](double t) { return colourU32(render::viridis(t)); }, legend);
     ImGui::Dummy(ImVec2(width + 2 * margin, barHeight + font * 1.6f));
-    const bool radiometric = std::string(legend.unit) == render::kFalseColourUnit;
-    ImGui::TextDisabled("%s, %s, %s, %s", legend.quantity, radiometric ? kUnit : legend.unit,
+    ImGui::TextDisabled("%s, %s, %s, %s", legend.quantity, legendUnitForScreen(legend),
                         legend.logScale ? "log scale" : "linear",
                         settings_.falseColourMaxW_m2 > 0 ? "manual max" : "automatic max");
 }

@@ -12,6 +12,7 @@
 
 #include <glm/common.hpp>
 
+#include "app/ui/HorizontalColourBar.h"
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/hemicube/HemicubeGather.h"
@@ -40,7 +41,6 @@ double upAzimuth(const render::HemicubeFrame& frame) {
 /// pixel's dF = dA / pi, ticks at 1-2-5 steps. dF is a form factor (dimensionless): the share of the
 /// point's light that one hemicube pixel carries, cos(theta) d omega / pi.
 void drawDeltaFormFactorScale(double zenithDeltaF, float width) {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
     const float font = ImGui::GetFontSize();
     const float margin = font * 1.2f;  // room for half an end label either side
     const float barWidth = std::max(width - 2 * margin, font * 4);
@@ -51,26 +51,7 @@ void drawDeltaFormFactorScale(double zenithDeltaF, float width) {
         return ImGui::GetColorU32(ImVec4(static_cast<float>(render::linearToSrgb(c.x)), static_cast<float>(render::linearToSrgb(c.y)),
                                          static_cast<float>(render::linearToSrgb(c.z)), 1.0f));
     };
-    constexpr int kPieces = 24;
-    for (int i = 0; i < kPieces; ++i) {
-        const double t0 = i / static_cast<double>(kPieces), t1 = (i + 1) / static_cast<double>(kPieces);
-        draw->AddRectFilledMultiColor(ImVec2(lo.x + barWidth * static_cast<float>(t0), lo.y),
-                                      ImVec2(lo.x + barWidth * static_cast<float>(t1) + 0.5f, hi.y), colour(t0), colour(t1),
-                                      colour(t1), colour(t0));
-    }
-    const render::ColourLegend scale = render::makeLegend(zenithDeltaF, false, 1);
-    const ImU32 text = ImGui::GetColorU32(ImGuiCol_Text);
-    float lastLabelEnd = -1e9f;
-    for (const double tick : scale.ticksW_m2) {
-        const float x = lo.x + barWidth * static_cast<float>(scale.position(tick));
-        draw->AddLine(ImVec2(x, hi.y), ImVec2(x, hi.y + font * 0.3f), text);
-        const std::string label = render::formatLegendTick(tick);
-        const float labelWidth = ImGui::CalcTextSize(label.c_str()).x;
-        const float left = x - labelWidth / 2;
-        if (left < lastLabelEnd + font * 0.4f) continue;  // crowded: keep the tick, drop its number
-        draw->AddText(ImVec2(left, hi.y + font * 0.35f), text, label.c_str());
-        lastLabelEnd = left + labelWidth;
-    }
+    drawHorizontalColourBar({lo, hi, 24, 0.4f, false}, colour, render::makeLegend(zenithDeltaF, false, 1));
     ImGui::Dummy(ImVec2(barWidth + 2 * margin, font * 2.3f));
     ImGui::TextWrapped("delta F of one hemicube pixel (no unit: cos theta d omega / pi); the zenith pixel's is dA / pi = %.3g",
                        zenithDeltaF);

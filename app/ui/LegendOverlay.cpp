@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <string>
 
+#include "app/ui/HorizontalColourBar.h"
+
 namespace radiant::app {
 
 namespace {
@@ -27,8 +29,7 @@ LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
     // "W/m²" with the UI font's superscript two; the quantity on its own line keeps the window narrow.
     ImGui::TextUnformatted(legend.quantity);
-    const bool radiometric = std::string(legend.unit) == render::kFalseColourUnit;
-    ImGui::TextDisabled("%s%s", radiometric ? "W/m\xC2\xB2" : legend.unit, legend.logScale ? ", log scale" : "");
+    ImGui::TextDisabled("%s%s", legendUnitForScreen(legend), legend.logScale ? ", log scale" : "");
 
     ImDrawList* draw = ImGui::GetWindowDrawList();
     const ImVec2 origin = ImGui::GetCursorScreenPos();

@@ -1,0 +1,27 @@
+#pragma once
+// A colour scale drawn across a panel: the bar in `pieces` linear steps of `colourAt(t)` (t in
+// [0, 1]), a tick under it at each of the legend's ticks and the tick's number where it has room.
+// The Display panel's false-colour legend and the Hemisphere panel's delta form factor scale.
+#include <functional>
+
+#include <imgui.h>
+
+#include "render/ColourScale.h"
+
+namespace radiant::app {
+
+struct HorizontalColourBar {
+    ImVec2 lo, hi;                        ///< the bar's corners (screen)
+    int pieces = 32;                      ///< linear steps: enough that the ramp looks smooth
+    float labelGapInFonts = 0.3f;         ///< a label closer than this to the previous one is left out
+    bool outlined = false;                ///< a border around the bar
+};
+
+/// Draws into the current window's draw list; reserves no layout room (the caller's Dummy does).
+void drawHorizontalColourBar(const HorizontalColourBar& bar, const std::function<ImU32(double)>& colourAt,
+                             const render::ColourLegend& ticks);
+
+/// The legend's unit as the UI font writes it: "W/m²" for the radiometric default, else as given.
+const char* legendUnitForScreen(const render::ColourLegend& legend);
+
+} // namespace radiant::app
