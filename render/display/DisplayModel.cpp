@@ -58,6 +58,7 @@ void DisplayModel::setMesh(const Scene& scene, const PatchMesh& mesh) {
     shooter_ = -1;
     radiosity_.clear();
     smoothRadiosity_.clear();
+    smoothRadiosityStale_ = false;
     changed_.assign(n, 0);
     importance_.assign(n, 0.0);
     importanceShown_.reset();
@@ -96,6 +97,8 @@ bool DisplayModel::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_
     if (radiosityW_m2.empty()) {
         hasRadiosity_ = false;
         radiosity_.clear();
+        smoothRadiosity_.clear();
+        smoothRadiosityStale_ = false;
         return true;
     }
     if (radiosityW_m2.size() != n)
@@ -126,7 +129,7 @@ bool DisplayModel::setRadiosity(std::span<const Rgb> radiosityW_m2, std::uint64_
     // A shot that changes most of the scene says nothing by its tint either.
     if (shooter < 0 || 2 * static_cast<std::size_t>(std::count(changed_.begin(), changed_.end(), 1)) > n)
         std::fill(changed_.begin(), changed_.end(), 0);
-    render::smoothRadiosity(smoothing_, patchArea_, radiosityW_m2, smoothRadiosity_);
+    smoothRadiosityStale_ = true;
     // Before light has bounced, only the emitters are lit: key and range follow them then.
     automaticKeyW_m2_ = litArea > 0 ? litLuminance / litArea : std::max(maxTotal / 3.0, 1e-30);
     dataMaxStale_ = true;
@@ -192,6 +195,14 @@ double DisplayModel::dataMaxW_m2() const {
     dataMaxMemoW_m2_ = roundUpForLegend(percentileValue > 0 ? percentileValue : largest);
     dataMaxStale_ = false;
     return dataMaxMemoW_m2_;
+}
+
+const std::vector<Rgb>& DisplayModel::smoothRadiosity() const {
+    if (smoothRadiosityStale_) {
+        render::smoothRadiosity(smoothing_, patchArea_, radiosity_, smoothRadiosity_);
+        smoothRadiosityStale_ = false;
+    }
+    return smoothRadiosity_;
 }
 
 ColourLegend DisplayModel::legend() const {
@@ -267,10 +278,12 @@ bool DisplayModel::refreshColours() {
     c.falseColour = falseColour && hasRadiosity_;
     if (hasRadiosity_ && inputs.mode != ColourMode::Reflectance) {
         // Only the shading shown.
-        if (c.smooth)
-            for (std::size_t v = 0; v < c.vertex.size(); ++v) c.vertex[v] = colourOf(smoothRadiosity_[v], vertexPatch_[v]);
-        else
+        if (c.smooth) {
+            const std::vector<Rgb>& smooth = smoothRadiosity();
+            for (std::size_t v = 0; v < c.vertex.size(); ++v) c.vertex[v] = colourOf(smooth[v], vertexPatch_[v]);
+        } else {
             for (std::size_t p = 0; p < n; ++p) c.patch[p] = colourOf(radiosity_[p], p);
+        }
     } else {
         for (std::size_t p = 0; p < n; ++p) {
             const glm::vec3 encoded(static_cast<float>(linearToSrgb(baseColour_[p].x)),

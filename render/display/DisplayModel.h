@@ -78,7 +78,9 @@ public:
     [[nodiscard]] std::int64_t shooter() const { return hasRadiosity_ ? shooter_ : -1; }
     /// Per patch: the last shot changed its radiosity visibly (all zero after a gathering step).
     [[nodiscard]] const std::vector<char>& changed() const { return changed_; }
-    [[nodiscard]] const std::vector<Rgb>& smoothRadiosity() const { return smoothRadiosity_; }
+    /// Per smoothing vertex, W/m^2: the area-weighted mean of the patches around it. Made when first
+    /// asked after a new solution (smooth shading asks; flat shading, the difference view's, never does).
+    [[nodiscard]] const std::vector<Rgb>& smoothRadiosity() const;
     [[nodiscard]] const SmoothingGroups& smoothing() const { return smoothing_; }
     [[nodiscard]] const FaceGrids& grids() const { return grids_; }
     /// How many solutions setRadiosity took.
@@ -123,7 +125,8 @@ private:
     std::uint64_t updates_ = 0;
     std::int64_t shooter_ = -1;
     std::vector<Rgb> radiosity_;        // per patch, W/m^2
-    std::vector<Rgb> smoothRadiosity_;  // per smoothing vertex, W/m^2
+    mutable std::vector<Rgb> smoothRadiosity_;  // per smoothing vertex, W/m^2; a memo, like dataMaxMemoW_m2_
+    mutable bool smoothRadiosityStale_ = false;
     std::vector<char> changed_;
 
     double automaticKeyW_m2_ = 1.0;      // mean luminance of the lit reflectors now
