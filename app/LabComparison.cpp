@@ -104,8 +104,9 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     settings.falseColourMaxW_m2 = kDifferenceTop;
     settings.shading = render::Shading::Flat;  // each patch's own difference, as computed
     // Where both agree the view is one flat colour: the patch edges keep the scene's shape readable
-    // (and show what each value belongs to).
-    settings.wireframe = true;
+    // (and show what each value belongs to). On a fine mesh they are a few pixels apart, darken the
+    // whole view and cost a derivative per pixel (a third of a frame on llvmpipe): none there.
+    settings.wireframe = d.mesh->size() <= kMostPatchesWithEdges;
     settings.highlightShooter = false;
     settings.showImportance = false;
     settings.showLinks = false;

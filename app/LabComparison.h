@@ -3,6 +3,7 @@
 // LiveSolve): a renderer for solution B and one for the difference view, the split of the 3D view
 // into halves drawn with one camera, and the labels and legend over them. Off, it draws the one
 // solution in the whole view as before. Main thread only (GL); GL-free header.
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -42,6 +43,8 @@ public:
 
     /// The difference view's colour map: log10 over DisplaySettings::kLogDecades decades below 1.
     static constexpr float kDifferenceTop = 1.0f;
+    /// The difference view outlines its patches up to this many (the lab's default meshes).
+    static constexpr std::size_t kMostPatchesWithEdges = 8000;
 
 private:
     LiveSolve& live_;
