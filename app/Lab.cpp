@@ -375,7 +375,8 @@ struct Lab::State {
             target = reading->target->name;
         return lesson::writeSession(
             lesson::captureSession(live.snapshot(), demoView.sceneCamera().camera(), demoView.sceneCamera().pivot(),
-                                   probePanel->picked(), target, display),
+                                   probePanel->picked(), target, display,
+                                   live.comparing() ? std::optional(live.comparison()) : std::nullopt),
             path);
     }
 
@@ -487,6 +488,9 @@ std::filesystem::path Lab::saveSession(const std::string& file) { return state_-
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
 void Lab::compare(bool on) { state_->live.compare(on); }
 void Lab::setComparison(const ComparisonSettings& settings) { state_->live.setComparison(settings); }
+std::optional<ComparisonSettings> Lab::comparison() const {
+    return state_->live.comparing() ? std::optional(state_->live.comparison()) : std::nullopt;
+}
 std::shared_ptr<const Snapshot> Lab::secondSnapshot() const { return state_->live.secondCurrent; }
 const SolutionDifference& Lab::comparisonDifference() const { return state_->comparison->difference(); }
 std::vector<render::Viewport> Lab::sceneViews() const { return state_->comparison->views(state_->viewport); }

@@ -100,6 +100,8 @@ public:
     /// off, side by side, difference), B's method, meshing and the view.
     void compare(bool on);
     void setComparison(const ComparisonSettings& settings);
+    /// B's settings, or nullopt while the comparison is off.
+    [[nodiscard]] std::optional<ComparisonSettings> comparison() const;
     /// B's snapshot the last frame drew; null while the comparison is off.
     [[nodiscard]] std::shared_ptr<const Snapshot> secondSnapshot() const;
     /// The difference view's values as last computed (mesh null: none yet).

@@ -98,4 +98,14 @@ void LabLessonStage::openPanel(const std::string& title) {
     sidebar_.focus(title);
 }
 
+void LabLessonStage::compare(const std::optional<ComparisonSettings>& settings) {
+    if (!settings) {
+        live_.compare(false);
+        return;
+    }
+    demos_.closeDemo();  // the comparison is of the scene's solutions
+    live_.setComparison(*settings);  // changes B while comparing; otherwise what compare(true) starts
+    live_.compare(true);
+}
+
 } // namespace radiant::app

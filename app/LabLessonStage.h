@@ -35,6 +35,7 @@ public:
     bool probe(const lesson::Probe& at) override;
     void openPanel(const std::string& title) override;
     render::DisplaySettings& display() override { return display_; }
+    void compare(const std::optional<ComparisonSettings>& settings) override;
 
 private:
     LiveSolve& live_;

@@ -10,6 +10,7 @@
 #include <variant>
 #include <vector>
 
+#include "app/solver/Comparison.h"
 #include "radiometry/solver/SolverMethods.h"
 
 namespace radiant::app::lesson {
@@ -73,10 +74,16 @@ struct SetDisplay {
     std::optional<bool> wireframe;
     std::optional<bool> isolines;
     std::optional<double> exposureStops;
+    std::optional<bool> photometric;  ///< lx and cd/m^2 instead of W/m^2
+};
+/// Two methods side by side (app/solver/Comparison.h): B's method, its mesh and the view; none ends
+/// the comparison.
+struct Compare {
+    std::optional<ComparisonSettings> settings;
 };
 
 using Action = std::variant<LoadScene, OpenDemo, SetMethod, SetTolerance, SetMeshing, SetLinkTolerance, SetMaterial,
-                            PlaceCamera, Run, Pause, Reset, Step, Probe, OpenPanel, SetDisplay>;
+                            PlaceCamera, Run, Pause, Reset, Step, Probe, OpenPanel, SetDisplay, Compare>;
 
 struct LessonStep {
     std::string title;

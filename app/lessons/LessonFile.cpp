@@ -195,10 +195,14 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
         for (const std::string& title : panelTitles()) known += std::string(known.empty() ? "" : ", ") + title;
         at.fail(key, "unknown panel '" + panel + "' (expected " + known + ")");
     }
-    if (key != "material" && key != "camera" && key != "probe" && key != "display")
+    if (key == "compare" && value.is_boolean()) {
+        if (value.get<bool>()) at.fail(key, "true says nothing of B: give {\"method\": ...}, or false to end it");
+        return Compare{};
+    }
+    if (key != "material" && key != "camera" && key != "probe" && key != "display" && key != "compare")
         at.fail("", "unknown action '" + key +
                         "' (expected scene, demo, method, tolerance, max_patch_area_m2, link_tolerance, material, "
-                        "camera, step, probe, panel, display, or \"run\", \"pause\", \"reset\", \"home-camera\")");
+                        "camera, step, probe, panel, display, compare, or \"run\", \"pause\", \"reset\", \"home-camera\")");
     if (!value.is_object()) at.fail(key, "expected an object, found " + value.dump());
     if (key == "material") {
         rejectUnknownKeys(at, value, {"surface", "reflectance", "exitance_W_m2"});
@@ -218,6 +222,24 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
         camera.fieldOfViewDegrees = number(at, member(at, value, "fov_deg"), "fov_deg", 1, 170, false);
         if (camera.eye == camera.target) at.fail("target", "is the eye itself: the camera looks nowhere");
         return camera;
+    }
+    if (key == "compare") {
+        rejectUnknownKeys(at, value, {"method", "patch_area_scale", "view"});
+        ComparisonSettings settings;
+        try {
+            settings.method = parseMethod(text(at, member(at, value, "method"), "method"));
+        } catch (const RadiantError& error) {
+            at.fail("method", error.detail());
+        }
+        if (value.contains("patch_area_scale"))
+            settings.patchAreaScale = number(at, value["patch_area_scale"], "patch_area_scale", 0.01, 100, false);
+        if (value.contains("view")) {
+            const std::string view = text(at, value["view"], "view");
+            if (view != "side-by-side" && view != "difference")
+                at.fail("view", "unknown view '" + view + "' (expected side-by-side or difference)");
+            settings.view = view == "difference" ? ComparisonView::Difference : ComparisonView::SideBySide;
+        }
+        return Compare{settings};
     }
     if (key == "probe") {
         rejectUnknownKeys(at, value, {"point", "normal", "target"});
@@ -260,7 +282,8 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
         return probe;
     }
     {  // display, the last of the known keys
-        rejectUnknownKeys(at, value, {"colour", "links", "importance", "wireframe", "isolines", "exposure_stops"});
+        rejectUnknownKeys(at, value,
+                          {"colour", "links", "importance", "wireframe", "isolines", "exposure_stops", "photometric"});
         SetDisplay display;
         if (value.contains("colour")) {
             display.colour = text(at, value["colour"], "colour");
@@ -273,6 +296,7 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
         if (value.contains("isolines")) display.isolines = flag(at, value["isolines"], "isolines");
         if (value.contains("exposure_stops"))
             display.exposureStops = number(at, value["exposure_stops"], "exposure_stops", -20, 20, false);
+        if (value.contains("photometric")) display.photometric = flag(at, value["photometric"], "photometric");
         return display;
     }
 }

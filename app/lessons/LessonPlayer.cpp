@@ -102,6 +102,9 @@ bool LessonPlayer::perform(const lesson::Action& action, LessonStage& stage) {
                 if (a.wireframe) display.wireframe = *a.wireframe;
                 if (a.isolines) display.isolines = *a.isolines;
                 if (a.exposureStops) display.exposureStops = static_cast<float>(*a.exposureStops);
+                if (a.photometric) display.photometric = *a.photometric;
+            } else if constexpr (std::is_same_v<A, lesson::Compare>) {
+                stage.compare(a.settings);
             }
             return true;
         },

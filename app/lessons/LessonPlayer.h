@@ -30,6 +30,8 @@ public:
     virtual bool probe(const lesson::Probe& probe) = 0;
     virtual void openPanel(const std::string& title) = 0;
     virtual render::DisplaySettings& display() = 0;
+    /// Starts (or changes) two methods side by side; nullopt ends the comparison.
+    virtual void compare(const std::optional<ComparisonSettings>& settings) = 0;
 };
 
 class LessonPlayer {

@@ -44,7 +44,17 @@ std::string sessionText(const SessionState& state, const std::string& savedAt) {
     if (state.display.wireframe) display["wireframe"] = *state.display.wireframe;
     if (state.display.isolines) display["isolines"] = *state.display.isolines;
     if (state.display.exposureStops) display["exposure_stops"] = *state.display.exposureStops;
+    if (state.display.photometric) display["photometric"] = *state.display.photometric;
     actions.push_back({{"display", display}});
+    // Before "run", which then starts both solvers (LiveSolve forwards A's commands to B); false ends
+    // a comparison the lab may be showing when the session opens.
+    if (const std::optional<ComparisonSettings>& c = state.comparison.settings)
+        actions.push_back({{"compare",
+                            {{"method", std::string(methodName(c->method))},
+                             {"patch_area_scale", c->patchAreaScale},
+                             {"view", c->view == ComparisonView::Difference ? "difference" : "side-by-side"}}}});
+    else
+        actions.push_back({{"compare", false}});
     actions.push_back("run");  // the solution is not saved: it is solved again, to the same tolerance
     if (state.probe) {
         Json probe = {{"point", triple(state.probe->point)}};
@@ -64,7 +74,8 @@ std::string sessionText(const SessionState& state, const std::string& savedAt) {
 
 SessionState captureSession(const Snapshot& shown, const render::Camera& camera, const glm::dvec3& pivot,
                             const std::optional<ProbePick>& pick, const std::optional<std::string>& target,
-                            const render::DisplaySettings& display) {
+                            const render::DisplaySettings& display,
+                            const std::optional<ComparisonSettings>& comparison) {
     if (!shown.scene) throw RadiantError({"session", ""}, "no scene is shown yet");
     SessionState state;
     bool builtin = false;
@@ -94,6 +105,8 @@ SessionState captureSession(const Snapshot& shown, const render::Camera& camera,
     state.display.wireframe = display.wireframe;
     state.display.isolines = display.isolines;
     state.display.exposureStops = display.exposureStops;
+    state.display.photometric = display.photometric;
+    state.comparison.settings = comparison;
     return state;
 }
 

@@ -26,17 +26,19 @@ struct SessionState {
     PlaceCamera camera;
     std::optional<Probe> probe;
     SetDisplay display;
+    Compare comparison;  ///< B's method, mesh and view while two methods are compared
 };
 
 /// The session as lesson JSON; `savedAt` names the moment in its step's title.
 std::string sessionText(const SessionState& state, const std::string& savedAt);
 
 /// The lab's state: what the snapshot shows (scene, mesh, method, tolerances, materials as edited),
-/// the camera and its pivot, the probe's pick and target, the display settings. Throws RadiantError
-/// before a scene is shown.
+/// the camera and its pivot, the probe's pick and target, the display settings, the comparison
+/// (nullopt: none). Throws RadiantError before a scene is shown.
 SessionState captureSession(const Snapshot& shown, const render::Camera& camera, const glm::dvec3& pivot,
                             const std::optional<ProbePick>& pick, const std::optional<std::string>& target,
-                            const render::DisplaySettings& display);
+                            const render::DisplaySettings& display,
+                            const std::optional<ComparisonSettings>& comparison = std::nullopt);
 /// Writes it to `path`, or when empty to radiant-session-YYYYMMDD-HHMMSS.json in the working folder;
 /// returns the absolute path. Throws RadiantError naming the file when it cannot.
 std::filesystem::path writeSession(const SessionState& state, const std::string& path);

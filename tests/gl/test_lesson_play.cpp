@@ -214,4 +214,48 @@ TEST_CASE("a saved session reopens to the same solution, materials, method, disp
     CHECK(worst < 1e-12);
     std::filesystem::remove(file);
 }
+
+TEST_CASE("a session saved while comparing two methods reopens comparing them, in the same units") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    const std::filesystem::path file = std::filesystem::temp_directory_path() / "radiant-test-session-compare.json";
+    const app::ComparisonSettings compared{SolverMethod::Progressive, 4.0, app::ComparisonView::Difference};
+    std::size_t patchesB = 0;
+    {
+        Lab lab(lessonLab());
+        settle(lab);
+        lab.setComparison(compared);
+        lab.compare(true);
+        lab.display().photometric = true;
+        lab.send(app::command::Run{});
+        settle(lab);
+        for (int frame = 0; frame < 200000 && !(lab.secondSnapshot() && lab.secondSnapshot()->mesh); ++frame) lab.frame();
+        REQUIRE(lab.secondSnapshot()->mesh);
+        patchesB = lab.secondSnapshot()->mesh->size();
+        lab.saveSession(file.string());
+    }
+    Lab reopened(lessonLab());
+    reopened.compare(true);  // comparing already (the default pair): the session's B replaces it
+    reopened.openLesson(file.string());
+    settle(reopened);
+    CHECK(reopened.lessonError().empty());
+    REQUIRE(reopened.comparison());
+    CHECK(*reopened.comparison() == compared);
+    CHECK(reopened.display().photometric);
+    for (int frame = 0; frame < 200000 && !(reopened.secondSnapshot() && reopened.secondSnapshot()->mesh &&
+                                            reopened.secondSnapshot()->mesh->size() == patchesB);
+         ++frame)
+        reopened.frame();
+    CHECK(reopened.secondSnapshot()->method == SolverMethod::Progressive);
+    CHECK(reopened.secondSnapshot()->mesh->size() == patchesB);  // B on 4x A's patch area, as saved
+
+    // A session saved with the comparison off turns it off.
+    reopened.compare(false);
+    reopened.saveSession(file.string());
+    reopened.compare(true);
+    reopened.openLesson(file.string());
+    settle(reopened);
+    CHECK_FALSE(reopened.comparison());
+    std::filesystem::remove(file);
+}
 } // TEST_SUITE

@@ -11,6 +11,7 @@
 
 #include "app/cli/CommandLine.h"
 #include "app/lessons/Lesson.h"
+#include "app/lessons/SessionFile.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
 
@@ -72,7 +73,7 @@ TEST_CASE("a lesson's actions come out as the values the lab plays") {
     CHECK(material.surface == "light");
     CHECK_FALSE(material.reflectance);
     CHECK(*material.exitanceW_m2 == Triple{1, 2, 3});
-    const Probe& probe = std::get<Probe>(actions[5]);
+    const app::lesson::Probe& probe = std::get<app::lesson::Probe>(actions[5]);
     CHECK(probe.point == Triple{0.42, 0, 0.12});
     CHECK_FALSE(probe.normal);
     CHECK(*probe.target == "light");
@@ -112,6 +113,48 @@ TEST_CASE("bad lessons are refused in one line naming the step, the action and t
           "bad.json: step 1 ('a'), captoin: unknown field (expected title, caption, actions)");
     CHECK(refusal(R"({"title": "t", "steps": []})") == "bad.json: steps: expected a list of one or more steps");
     CHECK(refusal(R"([1, 2])") == "bad.json: expected an object with \"title\" and \"steps\", found array");
+    CHECK(refusal(withAction(R"({"compare": {"method": "progressive", "view": "split"}})")) ==
+          "bad.json: step 1 ('first'), action 2 (compare), view: unknown view 'split' (expected side-by-side or difference)");
+    CHECK(refusal(withAction(R"({"compare": {"patch_area_scale": 4}})")) ==
+          "bad.json: step 1 ('first'), action 2 (compare), method: missing");
+    CHECK(refusal(withAction(R"({"compare": {"method": "jacobi", "patch_area_scale": 0}})")) ==
+          "bad.json: step 1 ('first'), action 2 (compare), patch_area_scale: 0 is outside [0.01, 100]");
+    CHECK(refusal(withAction(R"({"compare": true})")).find("action 2 (compare), compare: true says nothing of B") !=
+          std::string::npos);
+}
+
+TEST_CASE("a session saved while comparing two methods, in photometric units, reads back as it was") {
+    SessionState state;
+    state.scene = "cornell-box";
+    state.maxPatchAreaM2 = 0.01;
+    state.method = SolverMethod::GaussSeidel;
+    state.tolerance = 1e-4;
+    state.linkTolerance = 1e-4;
+    state.camera = {false, {0.28, 0.27, -0.8}, {0.28, 0.27, 0.28}, 39.3};
+    state.display.photometric = true;
+    state.comparison.settings = app::ComparisonSettings{SolverMethod::Progressive, 4.0, app::ComparisonView::Difference};
+    const Lesson read = parseLesson(sessionText(state, "now"), "session.json");
+    REQUIRE(read.steps.size() == 1);
+    std::optional<app::ComparisonSettings> compared;
+    bool photometric = false, comparedBeforeRun = false, ran = false;
+    for (const Action& action : read.steps[0].actions) {
+        if (const auto* c = std::get_if<Compare>(&action)) {
+            compared = c->settings;
+            comparedBeforeRun = !ran;
+        }
+        if (const auto* d = std::get_if<SetDisplay>(&action); d && d->photometric) photometric = *d->photometric;
+        ran = ran || std::holds_alternative<Run>(action);
+    }
+    REQUIRE(compared);
+    CHECK(*compared == *state.comparison.settings);
+    CHECK(comparedBeforeRun);  // "run" then starts both solvers
+    CHECK(photometric);
+    // Not comparing: "compare": false, so a lab that is comparing when the session opens stops.
+    state.comparison.settings.reset();
+    std::size_t ends = 0;
+    for (const Action& action : parseLesson(sessionText(state, "now"), "session.json").steps[0].actions)
+        if (const auto* c = std::get_if<Compare>(&action)) ends += c->settings ? 0 : 1;
+    CHECK(ends == 1);
 }
 
 TEST_CASE("`radiant lesson check` exits 0 on the shipped lessons and 2 on a bad one") {
