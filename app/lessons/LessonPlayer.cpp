@@ -26,6 +26,7 @@ void LessonPlayer::open(lesson::Lesson lesson) {
     cursor_ = Cursor{0, 0};
     waitingForScene_ = false;
     probeAttempts_ = 0;
+    replayFromStart_ = true;
 }
 
 void LessonPlayer::close() {
@@ -40,6 +41,7 @@ void LessonPlayer::goTo(std::size_t step) {
     cursor_ = onward ? Cursor{step, 0} : Cursor{0, 0};
     waitingForScene_ = false;
     probeAttempts_ = 0;
+    replayFromStart_ = !onward;
 }
 
 bool LessonPlayer::settled() const { return !cursor_; }
@@ -112,6 +114,12 @@ bool LessonPlayer::perform(const lesson::Action& action, LessonStage& stage) {
 }
 
 std::optional<std::string> LessonPlayer::update(LessonStage& stage) {
+    if (cursor_ && replayFromStart_) {
+        // Steps set the lab up as from a fresh start: a comparison only a later step began (or one
+        // left on before the lesson opened) would otherwise stay on screen.
+        stage.compare(std::nullopt);
+        replayFromStart_ = false;
+    }
     while (cursor_) {
         if (waitingForScene_) {
             if (!stage.sceneReady()) return std::nullopt;

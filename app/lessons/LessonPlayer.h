@@ -45,7 +45,8 @@ public:
 
     /// Goes to a step. From the settled step before it, only the step's own actions run (the solve
     /// goes on from where it is); from anywhere else every step up to it is replayed from the
-    /// first, so a jump back shows what the lesson showed there. Out-of-range steps are ignored.
+    /// first, so a jump back shows what the lesson showed there (a comparison a later step began
+    /// ends). Out-of-range steps are ignored.
     void goTo(std::size_t step);
     void next() { goTo(step_ + 1); }
     void previous() {
@@ -72,6 +73,7 @@ private:
     std::optional<Cursor> cursor_;  ///< the next action to run; empty once the step has settled
     bool waitingForScene_ = false;
     int probeAttempts_ = 0;
+    bool replayFromStart_ = false;  ///< the next update plays from the first step: undo later steps' comparison
 };
 
 } // namespace radiant::app

@@ -93,6 +93,7 @@ void checkStep(Lab& lab, const lesson::LessonStep& step) {
         if (const auto* display = std::get_if<lesson::SetDisplay>(&action)) {
             if (display->links) CHECK(lab.display().showLinks == *display->links);
             if (display->importance) CHECK(lab.display().showImportance == *display->importance);
+            if (display->photometric) CHECK(lab.display().photometric == *display->photometric);
         }
         // Solved (importance-driven radiosity may be solving again for the camera the step placed).
         if (std::holds_alternative<lesson::Run>(action)) CHECK(s.stats.iteration > 0);
@@ -113,6 +114,9 @@ TEST_CASE("every shipped lesson plays to its end in the lab, each step doing wha
         CAPTURE(file.filename().string());
         lab.openLesson(file.string());
         const lesson::Lesson& played = lab.lessons().lesson();
+        // Comparing two methods from the step that says so until one ends it; off when a lesson opens
+        // (the previous lesson may have left one on).
+        std::optional<app::ComparisonSettings> compared;
         for (std::size_t step = 0; step < played.steps.size(); ++step) {
             CAPTURE(step + 1);
             if (step > 0) lab.pressKey(GLFW_KEY_PAGE_DOWN);
@@ -120,6 +124,10 @@ TEST_CASE("every shipped lesson plays to its end in the lab, each step doing wha
             settle(lab);
             CHECK(lab.lessonError().empty());
             checkStep(lab, played.steps[step]);
+            for (const lesson::Action& action : played.steps[step].actions)
+                if (const auto* c = std::get_if<lesson::Compare>(&action)) compared = c->settings;
+            CHECK(lab.comparison().has_value() == compared.has_value());
+            if (compared && lab.comparison()) CHECK(lab.comparison()->method == compared->method);
         }
         lab.pressKey(GLFW_KEY_PAGE_DOWN);  // past the last step: stays there
         CHECK(lab.lessons().step() + 1 == played.steps.size());
@@ -146,6 +154,16 @@ TEST_CASE("Page Up replays the lesson up to the earlier step: Jacobi's second sw
     settle(lab);
     CHECK(lab.lessons().step() == 2);
     CHECK(lab.snapshot()->stats.iteration == 2);
+    // The last step sets Jacobi beside Gauss-Seidel; the step before it, replayed, has no comparison.
+    while (lab.lessons().step() + 1 < lab.lessons().stepCount()) {
+        lab.pressKey(GLFW_KEY_PAGE_DOWN);
+        settle(lab);
+    }
+    REQUIRE(lab.comparison());
+    CHECK(lab.comparison()->method == SolverMethod::Jacobi);
+    lab.pressKey(GLFW_KEY_PAGE_UP);
+    settle(lab);
+    CHECK_FALSE(lab.comparison());
 }
 
 TEST_CASE("a bad lesson file is refused in one line and the lab keeps its lesson") {
