@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "app/panels/demos/LectureDemo.h"
+#include "app/ui/LabelLayout.h"
 #include "app/window/PickRay.h"
 
 namespace radiant::app {
@@ -19,7 +20,8 @@ void drawDemoLabels(const render::DemoDrawing& drawing, const render::Camera& ca
     const float left = static_cast<float>(viewport.x) / pixelRatio, top = static_cast<float>(viewport.y) / pixelRatio;
     const float right = left + static_cast<float>(viewport.width) / pixelRatio,
                 bottom = top + static_cast<float>(viewport.height) / pixelRatio;
-    draw->PushClipRect({left, top}, {right, bottom});
+    std::vector<const render::DemoLabel*> shown;
+    std::vector<ui::LabelBox> boxes;  // the text's rectangles: their backgrounds may touch
     for (const render::DemoLabel& label : drawing.labels) {
         const glm::dvec3 p = render::projectToPixel(camera, viewport, glm::dvec3(label.anchor));
         if (p.z <= 0 || p.z >= 1) continue;  // behind the eye or beyond the far plane
@@ -30,8 +32,16 @@ void drawDemoLabels(const render::DemoDrawing& drawing, const render::Camera& ca
         ImVec2 at{static_cast<float>(p.x) / pixelRatio, static_cast<float>(p.y) / pixelRatio - 0.5f * size.y};
         at.x = std::clamp(at.x, left + pad, std::max(left + pad, right - size.x - pad));
         at.y = std::clamp(at.y, top + pad, std::max(top + pad, bottom - size.y - pad));
-        draw->AddRectFilled({at.x - pad, at.y - pad}, {at.x + size.x + pad, at.y + size.y + pad}, IM_COL32(10, 12, 16, 190),
-                            pad);
+        shown.push_back(&label);
+        boxes.push_back({at.x, at.y, size.x, size.y, label.pinned});
+    }
+    ui::separateLabels(boxes, top + pad, bottom - pad, 2.0f * pad);
+    draw->PushClipRect({left, top}, {right, bottom});
+    for (std::size_t i = 0; i < shown.size(); ++i) {
+        const render::DemoLabel& label = *shown[i];
+        const ImVec2 at{boxes[i].x, boxes[i].y};
+        draw->AddRectFilled({at.x - pad, at.y - pad}, {at.x + boxes[i].width + pad, at.y + boxes[i].height + pad},
+                            IM_COL32(10, 12, 16, 190), pad);
         draw->AddText(at, ImGui::ColorConvertFloat4ToU32({label.colour.x, label.colour.y, label.colour.z, label.colour.w}),
                       label.text.c_str());
     }

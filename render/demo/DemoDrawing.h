@@ -29,6 +29,9 @@ struct DemoLabel {
     glm::vec3 anchor{0.0f};  ///< m: the label's left end, centred vertically
     std::string text;        ///< may hold several lines
     glm::vec4 colour{1.0f};
+    /// Drawn at its anchor whatever it covers (a tick label, whose place is its meaning); other
+    /// labels move clear of each other and of it (app/ui/LabelLayout.h).
+    bool pinned = false;
 };
 
 class DemoDrawing {
@@ -56,6 +59,9 @@ public:
     void arrow(const glm::vec3& from, const glm::vec3& to, float head, const glm::vec4& colour, float widthPixels = 3.0f);
     void label(const glm::vec3& anchor, std::string text, const glm::vec4& colour = glm::vec4(1.0f)) {
         labels.push_back({anchor, std::move(text), colour});
+    }
+    void pinnedLabel(const glm::vec3& anchor, std::string text, const glm::vec4& colour = glm::vec4(1.0f)) {
+        labels.push_back({anchor, std::move(text), colour, true});
     }
 };
 

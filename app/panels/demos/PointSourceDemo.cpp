@@ -85,7 +85,7 @@ render::DemoDrawing PointSourceDemo::picture(const std::optional<PickRay>& curso
     for (const double tick : legend.ticksW_m2) {
         const double y = barHeight * legend.position(tick);
         d.line(point3(barX + 0.35, y, 0), point3(barX + 0.5, y, 0), kText);
-        d.label(point3(barX + 0.55, y, 0), printed("%s", render::formatLegendTick(tick).c_str()));
+        d.pinnedLabel(point3(barX + 0.55, y, 0), printed("%s", render::formatLegendTick(tick).c_str()));
     }
     d.label(point3(barX - 0.2, barHeight + 0.35, 0), "E (W/m^2)");
 

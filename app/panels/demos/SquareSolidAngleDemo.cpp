@@ -62,7 +62,7 @@ render::DemoDrawing SquareSolidAngleDemo::picture(const std::optional<PickRay>&)
             d.line(at, at + 0.05f * tickSide, kAxis, 2.0f);
         }
         d.label(1.4f * along, printed("%s", names[a]), kAxis);
-        d.label(along + 0.08f * tickSide + glm::vec3(0.03f, 0.05f, 0), "1 m", kAxis);
+        d.pinnedLabel(along + 0.08f * tickSide + glm::vec3(0.03f, 0.05f, 0), "1 m", kAxis);
     }
     d.sphere({0, 0, 0}, 0.035f, kText, 8);
 
