@@ -26,7 +26,7 @@ public:
     Simplifier(const std::vector<glm::dvec3>& points, const std::vector<Triangle>& triangles, double coplanarCosine)
         : points_(points), cosine_(coplanarCosine), sine_(std::sqrt(std::max(0.0, 1 - coplanarCosine * coplanarCosine))),
           incident_(points.size()) {
-        for (const Triangle& t : triangles) add(t);
+        for (const Triangle& t : triangles) add(t, false);
     }
 
     std::vector<Triangle> run() {
@@ -67,9 +67,10 @@ private:
         double area = 0;
     };
 
-    void add(const Triangle& t) {
+    void add(const Triangle& t, bool fresh) {
         const auto id = static_cast<std::uint32_t>(triangles_.size());
         triangles_.push_back(t);
+        fresh_.push_back(fresh);
         const glm::dvec3 a = areaVector(points_, t);
         const double length = glm::length(a);
         normals_.push_back(length > 0 ? a / length : glm::dvec3(0.0));
@@ -231,14 +232,15 @@ private:
     void flip(int passes) {
         for (int pass = 0; pass < passes && flipPass(); ++pass) {
         }
-        std::vector<Triangle> alive;
+        std::vector<std::pair<Triangle, bool>> alive;
         for (std::size_t t = 0; t < triangles_.size(); ++t)
-            if (alive_[t]) alive.push_back(triangles_[t]);
+            if (alive_[t]) alive.emplace_back(triangles_[t], fresh_[t]);
         triangles_.clear();
+        fresh_.clear();
         normals_.clear();
         alive_.clear();
         for (auto& fan : incident_) fan.clear();
-        for (const Triangle& t : alive) add(t);
+        for (const auto& [t, fresh] : alive) add(t, fresh);
     }
 
     /// Removes v where that keeps the geometry; `ring` gets the vertices whose fans changed.
@@ -262,12 +264,12 @@ private:
         ring.clear();
         for (const Run& run : *runs) ring.insert(ring.end(), run.ring.begin(), run.ring.end());
         for (std::uint32_t t : old) kill(t);
-        for (const Triangle& t : replacement) add(t);
+        for (const Triangle& t : replacement) add(t, true);
         return true;
     }
 
-    /// Flips every coplanar pair (a, b, c) + (b, a, w) into (a, w, c) + (w, b, c) where that raises
-    /// the pair's smallest angle; true when any flipped.
+    /// Flips every coplanar pair (a, b, c) + (b, a, w), one of them made here, into (a, w, c) +
+    /// (w, b, c) where that raises the pair's smallest angle; true when any flipped.
     bool flipPass() {
         bool flipped = false;
         for (std::uint32_t t = 0; t < triangles_.size(); ++t) {
@@ -283,7 +285,8 @@ private:
                         break;
                     }
                 }
-                if (!found || !coplanar(normals_[t], normals_[u]) || w == c || hasEdge(c, w)) continue;
+                // The exporter's own triangles keep their diagonals where nothing was removed.
+                if (!found || !(fresh_[t] || fresh_[u]) || !coplanar(normals_[t], normals_[u]) || w == c || hasEdge(c, w)) continue;
                 const Triangle first{a, w, c}, second{w, b, c};
                 const glm::dvec3 n1 = areaVector(points_, first), n2 = areaVector(points_, second);
                 const double l1 = glm::length(n1), l2 = glm::length(n2);
@@ -293,8 +296,8 @@ private:
                 if (!(after > before + 1e-9)) continue;
                 kill(t);
                 kill(u);
-                add(first);
-                add(second);
+                add(first, true);
+                add(second, true);
                 flipped = true;
             }
         }
@@ -307,6 +310,7 @@ private:
     const std::vector<glm::dvec3>& points_;
     double cosine_, sine_;
     std::vector<Triangle> triangles_;
+    std::vector<bool> fresh_;  ///< made by a removal or a flip, not given
     std::vector<glm::dvec3> normals_;
     std::vector<bool> alive_;
     std::vector<std::vector<std::uint32_t>> incident_;

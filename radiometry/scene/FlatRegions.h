@@ -17,7 +17,8 @@ using Triangle = std::array<std::uint32_t, 3>;
 ///  - on a straight crease: its closed fan is two coplanar runs whose two border edges are collinear;
 ///  - on a straight border: its fan is one open coplanar run whose two border edges are collinear,
 /// triangulating each run's hole by ear clipping in the run's plane (the fattest ear first), then
-/// flips coplanar pairs whose other diagonal gives a larger smallest angle. Coplanar means unit
+/// flips coplanar pairs (one of them new) whose other diagonal gives a larger smallest angle; where
+/// nothing was removed the triangles come back as given, in their order. Coplanar means unit
 /// normals within `coplanarCosine`, collinear within the same angle. A removal that would not keep
 /// the mesh manifold and its area (a non-simple hole, an edge that already exists) is skipped.
 /// Triangles are counter-clockwise index triples into `points`, which are welded (one index per

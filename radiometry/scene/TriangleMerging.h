@@ -18,9 +18,10 @@ namespace radiant::detail {
 /// straight border, is removed and its hole triangulated in the plane, and coplanar triangles are
 /// flipped towards Delaunay's (the largest smallest angle): the geometry, its area and its
 /// closedness are unchanged and the triangulation stays conforming (no T-junction), but a flat
-/// region keeps only the corners of its outline. Then coplanar triangles sharing an edge are paired
-/// into convex quads where the pair forms one (strictly convex, so no corner is dropped); the rest
-/// stay triangles.
+/// region keeps only the corners of its outline; the grouped faces are kept where they are at most
+/// half as many as the given ones. Then coplanar triangles sharing an edge are paired into convex
+/// quads where the pair forms one (strictly convex, so no corner is dropped; grouped, only quads
+/// with opposite sides within 3:1); the rest stay triangles.
 std::vector<Face> mergeTriangles(const std::vector<glm::dvec3>& positions,
                                  const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                  bool removeFlat = true);
