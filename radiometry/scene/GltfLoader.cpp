@@ -315,7 +315,7 @@ private:
             // after its material ("Room/Floor"), not by a counter ("Room (2)").
             if (trianglePrimitives > 1) name += "/" + result_.scene.materials[surface.material].name;
             surface.name = uniqueName(std::move(name));
-            surface.faces = detail::mergeTriangles(positions, triangles);
+            surface.faces = detail::mergeTriangles(positions, triangles, options_.groupCoplanarTriangles);
             surface.origin = where.element;
             const bool doubleSided = primitive.material >= 0 && model_.materials[static_cast<std::size_t>(primitive.material)].doubleSided;
             if (!doubleSided) {

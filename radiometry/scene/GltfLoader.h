@@ -4,8 +4,11 @@
 //  - Geometry: every node of the default scene (else scene 0, else every root node) with its
 //    transform (matrix or TRS) composed down the hierarchy; triangle primitives, indexed (u8, u16,
 //    u32) or not. Units are metres, as glTF defines them.
-//  - Faces: coplanar edge-adjacent triangles of one primitive that form a convex quad become one
-//    quad face, so a wall exported as two triangles is one face.
+//  - Faces: vertices inside a flat region of a primitive (and on a straight line between two flat
+//    regions, or on a straight border) are removed and their holes retriangulated in the plane, so
+//    a subdivided flat wall or a cylinder's cap keeps only its outline (TriangleMerging.h); then
+//    coplanar edge-adjacent triangles that form a convex quad become one quad face, so a wall
+//    exported as two triangles is one face.
 //  - Surfaces: one per primitive instance, named after its node, else its mesh, else "mesh N";
 //    where a mesh has several primitives, "<node>/<material name>"; " (2)", " (3)" ... where a
 //    name still repeats; Surface::origin is "mesh M, primitive P".
@@ -38,6 +41,9 @@ namespace radiant {
 struct SceneLoadOptions {
     std::size_t triangleBudget = 2'000'000;  ///< refuse (BudgetError, with the numbers) above this
     std::uint64_t fileByteBudget = std::uint64_t{1} << 30;  ///< per file read (glTF, buffer, image)
+    /// Remove the vertices of flat regions (exact: the geometry is unchanged); off, every triangle
+    /// stays (paired into quads), as exported. Tests compare the two.
+    bool groupCoplanarTriangles = true;
 };
 
 struct LoadedScene {

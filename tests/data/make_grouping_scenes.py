@@ -8,6 +8,15 @@ patch area, not the triangles) into tests/data/grouping/:
   to 0.019 m^2, mean 0.0057), reflectance 0.5, floating 0.2 m above the floor of a closed 3 m cube
   room (walls facing inward, reflectance 0.5) lit by a 0.6 m square ceiling lamp 1 cm below the
   ceiling (50 W/m^2, black).
+- bevelled_box_room.gltf: a box as Blender's cube exports after "subdivide" (12 cuts) and a bevel of
+  its edges (radius 0.15 m, 4 segments): 1.2 m across, every side a 16 x 16 grid (12 x 12 on its
+  flat face, 2 bevel rows on each side), so 3,072 triangles; the flat faces and the bevel's strips
+  are exactly planar, the corners are spherical. Reflectance 0.5, 0.3 m above the floor of the
+  rounded cube's room.
+- bevelled_box_furnace.gltf: the same box seen from inside (triangles facing inward), emitting
+  1 W/m^2 and reflecting 0.5: a convex furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
+- cylinder_room.gltf: a cylinder (radius 0.4 m, 1 m tall, 48 segments, its side in 4 rows) whose caps
+  are fans of 4 rings, 336 triangles each, as one primitive, 0.1 m above the floor of the same room.
 - furnace_sphere.gltf: the inside of a closed UV sphere (radius 1 m, 32 segments x 16 rings,
   triangles facing inward, tiny ones at the poles and large ones at the equator) that emits
   1 W/m^2 and reflects 0.5: the furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
@@ -61,6 +70,87 @@ def rounded_cube(half, lift):
                 for j in range(GRID):
                     a, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
                     triangles += [(a, b, c), (a, c, d)]
+    return positions, triangles
+
+
+def bevelled_box(half, radius, lift, inward):
+    """A box of half-size `half` whose edges are rounded with `radius`: the points of the cube's
+    surface grid mapped to the inner box [-a, a]^3 (a = half - radius) plus `radius` along the
+    direction from the nearest inner point, so the flat part stays put. Grid lines per side: 12
+    uniform ones across the flat part, then bevel rows at 22.5 and 45 degrees."""
+    a = half - radius
+    flat = [-a + 2 * a * k / 12 for k in range(13)]
+    bevel = [a + radius * math.tan(math.pi / 8), half]
+    lines = [-b for b in reversed(bevel)] + flat + bevel
+    grid = len(lines) - 1
+    positions, index = [], {}
+
+    def vertex(p):
+        key = tuple(round(c * 1e6) for c in p)
+        if key not in index:
+            c = [max(-a, min(a, x)) for x in p]
+            d = [x - y for x, y in zip(p, c)]
+            n = math.sqrt(sum(x * x for x in d))
+            q = [y + radius * x / n for x, y in zip(d, c)]
+            index[key] = len(positions)
+            positions.append((q[0], q[1] + lift, q[2]))
+        return index[key]
+
+    triangles = []
+    for axis in range(3):
+        for sign in (-1.0, 1.0):
+            u_axis, v_axis = (axis + 1) % 3, (axis + 2) % 3
+            if sign < 0:
+                u_axis, v_axis = v_axis, u_axis
+
+            def point(i, j):
+                p = [0.0, 0.0, 0.0]
+                p[axis] = sign * half
+                p[u_axis] = lines[i]
+                p[v_axis] = lines[j]
+                return vertex(p)
+
+            for i in range(grid):
+                for j in range(grid):
+                    a_, b, c, d = point(i, j), point(i + 1, j), point(i + 1, j + 1), point(i, j + 1)
+                    triangles += [(a_, b, c), (a_, c, d)]
+    if inward:
+        triangles = [(x, z, y) for x, y, z in triangles]
+    return positions, triangles
+
+
+def cylinder(radius, height, segments, rows, rings, lift):
+    """A closed cylinder standing on y = lift, its caps fans of `rings` rings around their centres."""
+    positions, triangles = [], []
+
+    def rim(y, r):
+        start = len(positions)
+        for k in range(segments):
+            angle = 2 * math.pi * k / segments
+            positions.append((r * math.cos(angle), y, -r * math.sin(angle)))
+        return start
+
+    side = [rim(lift + height * j / rows, radius) for j in range(rows + 1)]
+    for j in range(rows):
+        for k in range(segments):
+            a, b = side[j] + k, side[j] + (k + 1) % segments
+            c, d = side[j + 1] + (k + 1) % segments, side[j + 1] + k
+            triangles += [(a, b, c), (a, c, d)]  # counter-clockwise from outside
+    for y, up, outer in ((lift + height, True, side[rows]), (lift, False, side[0])):
+        ring_start = [rim(y, radius * ring / rings) for ring in range(1, rings)] + [outer]
+        positions.append((0.0, y, 0.0))
+        centre = len(positions) - 1
+
+        def oriented(t):
+            return t if up else (t[0], t[2], t[1])
+
+        for k in range(segments):
+            triangles.append(oriented((centre, ring_start[0] + k, ring_start[0] + (k + 1) % segments)))
+        for ring in range(rings - 1):
+            for k in range(segments):
+                a, b = ring_start[ring] + k, ring_start[ring] + (k + 1) % segments
+                c, d = ring_start[ring + 1] + (k + 1) % segments, ring_start[ring + 1] + k
+                triangles += [oriented((a, d, c)), oriented((a, c, b))]
     return positions, triangles
 
 
@@ -158,6 +248,18 @@ def main():
     surfaces.append(("rounded cube", 2, positions, triangles))
     write("rounded_cube_room.gltf", "rounded cube room", surfaces,
           [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey cube", 0.5)])
+
+    room = [(name, 0, quad, [(0, 1, 2), (0, 2, 3)]) for name, quad in room_quads(3.0, 3.0, 3.0)]
+    room.append(surfaces[6])
+    positions, triangles = bevelled_box(0.6, 0.15, 0.9, inward=False)
+    write("bevelled_box_room.gltf", "bevelled box room", room + [("bevelled box", 2, positions, triangles)],
+          [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey box", 0.5)])
+    positions, triangles = bevelled_box(0.6, 0.15, 0.0, inward=True)
+    write("bevelled_box_furnace.gltf", "bevelled box furnace", [("box inside", 0, positions, triangles)],
+          [material("glowing grey", 0.5, 1.0)])
+    positions, triangles = cylinder(0.4, 1.0, 48, 4, 4, 0.1)
+    write("cylinder_room.gltf", "cylinder room", room + [("cylinder", 2, positions, triangles)],
+          [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey cylinder", 0.5)])
 
     positions, triangles = uv_sphere(1.0, 32, 16, inward=True)
     write("furnace_sphere.gltf", "furnace sphere", [("sphere inside", 0, positions, triangles)],

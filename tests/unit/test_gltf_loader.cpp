@@ -91,7 +91,9 @@ TEST_CASE("surfaces are named after node, else mesh, with a suffix where a name 
 }
 
 TEST_CASE("coplanar triangles pair into quads, one face per square") {
-    const LoadedScene loaded = loadGltf(dataFile("two_squares.gltf"));
+    SceneLoadOptions ungrouped;
+    ungrouped.groupCoplanarTriangles = false;
+    const LoadedScene loaded = loadGltf(dataFile("two_squares.gltf"), ungrouped);
     REQUIRE(loaded.scene.surfaces.size() == 1);
     const auto& faces = loaded.scene.surfaces[0].faces;
     REQUIRE(faces.size() == 2);
@@ -99,6 +101,11 @@ TEST_CASE("coplanar triangles pair into quads, one face per square") {
         CHECK(f.vertices.size() == 4);
         CHECK(f.area == doctest::Approx(1.0).scale(0));
     }
+    // Grouped (the default), the two squares side by side are one flat region: one 2 m^2 rectangle.
+    const LoadedScene grouped = loadGltf(dataFile("two_squares.gltf"));
+    REQUIRE(grouped.scene.surfaces[0].faces.size() == 1);
+    CHECK(grouped.scene.surfaces[0].faces[0].vertices.size() == 4);
+    CHECK(grouped.scene.surfaces[0].faces[0].area == doctest::Approx(2.0).scale(0));
 }
 
 TEST_CASE("materials: emissive strength, extras.radiant override, texture mean") {

@@ -179,7 +179,8 @@ TEST_CASE("rounded cube of 3,072 triangles: patches follow the requested area, c
         CHECK(mesh.size() == estimatePatchCount(scene, {maxArea}));
         CHECK(areaOf(mesh, cube) == relativeTo(area, 1e-9));
         // Within twice area / max where the request is finer than the triangles; where it is not,
-        // each triangle stays at least one patch (grouping triangles is not done yet).
+        // each triangle stays at least one patch (the loader groups flat regions only, and no two
+        // triangles of this superellipsoid are coplanar).
         const double triangles = static_cast<double>(scene.surfaces[cube].faces.size());
         CHECK(static_cast<double>(count) < std::max(2 * area / maxArea, triangles + area / maxArea));
         for (std::size_t p = mesh.surfaceFirstPatch[cube]; p < mesh.surfaceFirstPatch[cube + 1]; ++p)
