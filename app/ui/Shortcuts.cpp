@@ -19,7 +19,7 @@ constexpr Shortcut kShortcuts[] = {
     {LabAction::NextLessonStep, GLFW_KEY_PAGE_DOWN, 0, "Page Down", "next step of the open lesson", false},
     {LabAction::PreviousLessonStep, GLFW_KEY_PAGE_UP, 0, "Page Up", "previous step of the open lesson", false},
     {LabAction::Compare, GLFW_KEY_V, 0, "V", "compare two methods: side by side, then their difference, then off (Solver panel: which two)", false},
-    {LabAction::SaveSession, GLFW_KEY_S, 0, "Ctrl+S", "save the session (scene, materials, method, camera, probe, display) as `radiant-session-YYYYMMDD-HHMMSS.json`", false, true},
+    {LabAction::SaveSession, GLFW_KEY_S, 0, "Ctrl+S", "save the session (scene, materials, method, camera, probe, display with its units, the comparison of two methods) as `radiant-session-YYYYMMDD-HHMMSS.json`", false, true},
     {LabAction::OpenFile, GLFW_KEY_O, 0, "Ctrl+O", "open a lesson or session file (the Lessons panel's path field)", false, true},
     {LabAction::UndoMaterial, GLFW_KEY_Z, 0, "Ctrl+Z", "undo the last material edit (a whole drag, or Reset materials)", false, true},
     {LabAction::RedoMaterial, GLFW_KEY_Y, 0, "Ctrl+Y", "redo the material edit undone", false, true},
