@@ -162,30 +162,7 @@ TEST_CASE("hierarchical sphere in a glowing box: (1 - rho) sum A B = sum A E, an
     }
 }
 
-TEST_CASE("hierarchical sphere room (tests/data/curved): every surface within 2% of Gauss-Seidel on the same mesh") {
-    const Scene scene = loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/curved/sphere_room.gltf").scene;
-    const PatchMesh mesh = meshScene(scene, MeshingOptions{0.01});
-    const auto reference = makeSolver(SolverMethod::GaussSeidel, scene, mesh);
-    for (int k = 0; k < 1000 && reference->step().residual > 1e-8; ++k) {
-    }
-    HierarchicalSolver solver(scene, mesh, SolverOptions{}, nullptr);
-    for (int k = 0; k < 200 && solver.step().residual > 1e-7; ++k) {
-    }
-    for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        if (scene.materials[scene.surfaces[s].material].emits()) continue;
-        CAPTURE(scene.surfaces[s].name);
-        const double hierarchical = surfaceMean(mesh, solver.solution(), s);
-        const double gaussSeidel = surfaceMean(mesh, reference->solution(), s);
-        MESSAGE(scene.surfaces[s].name << ": hierarchical " << hierarchical << ", Gauss-Seidel " << gaussSeidel);
-        CHECK(hierarchical == doctest::Approx(gaussSeidel).scale(0).epsilon(0.02));
-    }
-}
-
-TEST_CASE("hierarchical sphere room (tests/data/curved): the sphere's underside and the floor in its shadow within 2% of Gauss-Seidel") {
-    // The sphere (radius 0.5 m, centre 0.7 m up) hangs 0.2 m over the floor, which is in its shadow
-    // there. Each underside facet is a tiny root whose one link to the floor's root (4 m^2, F ~ 0.96)
-    // carries the floor's mean radiosity, twice what the floor beneath it has: its BF error is far
-    // below the threshold, so refinement alone never sees it (it was +9% against the path tracer).
+TEST_CASE("hierarchical sphere room (tests/data/curved): every surface, the sphere's underside and the floor in its shadow within 2% of Gauss-Seidel on the same mesh") {
     const Scene scene = loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/curved/sphere_room.gltf").scene;
     const PatchMesh mesh = meshScene(scene, MeshingOptions{0.01});
     const auto reference = makeSolver(SolverMethod::GaussSeidel, scene, mesh);
@@ -196,9 +173,21 @@ TEST_CASE("hierarchical sphere room (tests/data/curved): the sphere's underside 
     }
     std::size_t sphere = scene.surfaces.size(), floor = scene.surfaces.size();
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        if (scene.surfaces[s].name.find("phere") != std::string::npos) sphere = s;
-        if (scene.surfaces[s].name.find("loor") != std::string::npos) floor = s;
+        if (scene.surfaces[s].name == "sphere") sphere = s;
+        if (scene.surfaces[s].name == "floor") floor = s;
+        if (scene.materials[scene.surfaces[s].material].emits()) continue;
+        CAPTURE(scene.surfaces[s].name);
+        const double hierarchical = surfaceMean(mesh, solver.solution(), s);
+        const double gaussSeidel = surfaceMean(mesh, reference->solution(), s);
+        MESSAGE(scene.surfaces[s].name << ": hierarchical " << hierarchical << ", Gauss-Seidel " << gaussSeidel);
+        CHECK(hierarchical == test::relativeTo(gaussSeidel, 0.02));
     }
+    // The sphere (radius 0.5 m, centre 0.7 m up) hangs 0.2 m over the floor, which is in its shadow
+    // there. Each underside facet is a tiny root whose link to the floor (F ~ 0.96) carried the floor's
+    // mean radiosity, about twice what the floor beneath it has; the link's BF error is far below the
+    // threshold, so refinement never split it: the underside was +5.8% and the floor under it +15%
+    // (it read the bright underside back, and links from larger floor elements gave it their share
+    // of the walls and the lamp).
     REQUIRE(sphere < scene.surfaces.size());
     REQUIRE(floor < scene.surfaces.size());
     // The lowest three rings (below 0.3 m), and the floor within 0.3 m of the point under the centre.
