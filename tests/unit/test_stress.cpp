@@ -258,11 +258,12 @@ struct WatchedStorm {
     std::future<StormResult> result;
     std::string stallReport;  ///< empty when the storm finished
     std::chrono::steady_clock::duration elapsed{};
+    std::chrono::steady_clock::duration longestWait{};  ///< the longest the watchdog saw no progress
 };
 
 /// Starts the storm on a thread of its own; watch() then waits for it.
 WatchedStorm launchStorm(const std::shared_ptr<Storm>& storm) {
-    return {storm, std::async(std::launch::async, [storm] { return storm->run(); }), {}, {}};
+    return {storm, std::async(std::launch::async, [storm] { return storm->run(); }), {}, {}, {}};
 }
 
 /// Waits for a launched storm, or until it has made no progress for `stallLimit`.
@@ -275,6 +276,7 @@ void watch(WatchedStorm& watched, std::chrono::steady_clock::duration stallLimit
         const auto now = std::chrono::steady_clock::now();
         if (const std::uint64_t newMark = storm->progressMark(); newMark != mark) {
             mark = newMark;
+            watched.longestWait = std::max(watched.longestWait, now - lastProgress);
             lastProgress = now;
         } else if (now - lastProgress >= stallLimit) {
             std::ostringstream report;
@@ -313,7 +315,9 @@ void checkStorm(std::uint64_t seed, int commands) {
     CHECK_MESSAGE(result.readerProblem.empty(), result.readerProblem);
     CHECK(result.snapshotsRead > 0);
     MESSAGE("seed " << seed << ": " << result.snapshotsRead << " snapshots read, " << result.meshesSeen
-                    << " mesh generations, " << std::chrono::duration<double>(watched.elapsed).count() << " s");
+                    << " mesh generations, " << std::chrono::duration<double>(watched.elapsed).count()
+                    << " s, the longest without progress " << std::chrono::duration<double>(watched.longestWait).count()
+                    << " s");
 
     const Snapshot& s = *result.final;
     REQUIRE_MESSAGE(s.error.empty(), s.error);
