@@ -258,10 +258,17 @@ struct WatchedStorm {
     std::future<StormResult> result;
     std::string stallReport;  ///< empty when the storm finished
     std::chrono::steady_clock::duration elapsed{};
+    std::chrono::steady_clock::duration longestWait{};  ///< the longest the watchdog saw no progress
 };
 
-WatchedStorm watchStorm(const std::shared_ptr<Storm>& storm, std::chrono::steady_clock::duration stallLimit) {
-    WatchedStorm watched{storm, std::async(std::launch::async, [storm] { return storm->run(); }), {}, {}};
+/// Starts the storm on a thread of its own; watch() then waits for it.
+WatchedStorm launchStorm(const std::shared_ptr<Storm>& storm) {
+    return {storm, std::async(std::launch::async, [storm] { return storm->run(); }), {}, {}, {}};
+}
+
+/// Waits for a launched storm, or until it has made no progress for `stallLimit`.
+void watch(WatchedStorm& watched, std::chrono::steady_clock::duration stallLimit) {
+    const std::shared_ptr<Storm>& storm = watched.storm;
     const auto started = std::chrono::steady_clock::now();
     auto lastProgress = started;
     std::uint64_t mark = storm->progressMark();
@@ -269,6 +276,7 @@ WatchedStorm watchStorm(const std::shared_ptr<Storm>& storm, std::chrono::steady
         const auto now = std::chrono::steady_clock::now();
         if (const std::uint64_t newMark = storm->progressMark(); newMark != mark) {
             mark = newMark;
+            watched.longestWait = std::max(watched.longestWait, now - lastProgress);
             lastProgress = now;
         } else if (now - lastProgress >= stallLimit) {
             std::ostringstream report;
@@ -279,6 +287,11 @@ WatchedStorm watchStorm(const std::shared_ptr<Storm>& storm, std::chrono::steady
         }
     }
     watched.elapsed = std::chrono::steady_clock::now() - started;
+}
+
+WatchedStorm watchStorm(const std::shared_ptr<Storm>& storm, std::chrono::steady_clock::duration stallLimit) {
+    WatchedStorm watched = launchStorm(storm);
+    watch(watched, stallLimit);
     return watched;
 }
 
@@ -302,7 +315,9 @@ void checkStorm(std::uint64_t seed, int commands) {
     CHECK_MESSAGE(result.readerProblem.empty(), result.readerProblem);
     CHECK(result.snapshotsRead > 0);
     MESSAGE("seed " << seed << ": " << result.snapshotsRead << " snapshots read, " << result.meshesSeen
-                    << " mesh generations, " << std::chrono::duration<double>(watched.elapsed).count() << " s");
+                    << " mesh generations, " << std::chrono::duration<double>(watched.elapsed).count()
+                    << " s, the longest without progress " << std::chrono::duration<double>(watched.longestWait).count()
+                    << " s");
 
     const Snapshot& s = *result.final;
     REQUIRE_MESSAGE(s.error.empty(), s.error);
@@ -355,20 +370,30 @@ std::vector<std::uint64_t> stormSeeds() {
 /// watchdog has spoken, so the threads still end and join.
 class StuckBuild {
 public:
-    explicit StuckBuild(int stuckAt) : stuckAt_(stuckAt), released_(release_.get_future().share()) {}
+    explicit StuckBuild(int stuckAt)
+        : stuckAt_(stuckAt), entered_(enter_.get_future().share()), released_(release_.get_future().share()) {}
 
     SolverFactory factory() {
         return [this](SolverMethod method, const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                       Progress* progress) {
-            if (++builds_ == stuckAt_) released_.wait();
+            if (++builds_ == stuckAt_) {
+                enter_.set_value();
+                released_.wait();
+            }
             return makeSolver(method, scene, mesh, options, progress);
         };
+    }
+    /// True once the worker is inside the stuck build (and so can make no more progress).
+    [[nodiscard]] bool entered() const {
+        return entered_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
     }
     void release() { release_.set_value(); }
 
 private:
     int stuckAt_;
     std::atomic<int> builds_{0};
+    std::promise<void> enter_;
+    std::shared_future<void> entered_;
     std::promise<void> release_;
     std::shared_future<void> released_;
 };
@@ -386,11 +411,19 @@ TEST_CASE("thousands of random commands: every snapshot consistent, the end equa
 TEST_CASE("a worker stuck mid-build is reported by the watchdog with every thread's state") {
     // The real limit is 60 s; a short one keeps this test fast. The report must name what the stuck
     // worker was doing (a solver build: form factors), the command it took last, and how far the
-    // sender and the reader got.
+    // sender and the reader got. The short limit is armed only once the worker is inside the stuck
+    // build: armed at once, it fired on a loaded machine (load ~10, the worker at nice 10) while the
+    // worker was still slowly meshing the first scene ("1 commands taken, the last a LoadScene,
+    // meshing"), a slow worker taken for a stuck one, and the report named no form factors. A storm
+    // that ends without reaching the stuck build fails the REQUIRE below rather than hangs.
     constexpr auto kShortStallLimit = std::chrono::seconds(2);
     StuckBuild stuck(3);
     const auto storm = std::make_shared<Storm>(1, 300, stuck.factory());
-    WatchedStorm watched = watchStorm(storm, kShortStallLimit);
+    WatchedStorm watched = launchStorm(storm);
+    while (!stuck.entered() && watched.result.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready)
+        continue;
+    REQUIRE_MESSAGE(stuck.entered(), "the storm ended without reaching the stuck build");
+    watch(watched, kShortStallLimit);
     stuck.release();
     const StormResult result = watched.result.get();  // released: the storm ends and its threads join
 
