@@ -160,6 +160,8 @@ TEST_SUITE("hierarchical") {
 
 TEST_CASE("element tree: roots per face, quad and triangle children tile their parent") {
     Scene scene = makeCornellBox();
+    // Without the blocks, whose footprints would cut the floor into more roots (ContactCuts.h).
+    std::erase_if(scene.surfaces, [](const Surface& s) { return s.name.find("block") != std::string::npos; });
     // A convex pentagon fans into three triangle roots.
     scene.surfaces.push_back({"pentagon", 0,
                               {makeFace({{0, 0, 2}, {1, 0, 2}, {1.3, 0.8, 2}, {0.5, 1.3, 2}, {-0.3, 0.8, 2}})}, "test"});
@@ -367,7 +369,8 @@ TEST_CASE("hierarchical: the meshed Cornell box shows each patch the leaves unde
         // The patches' area-weighted mean is the leaves' (both tile the surface).
         Rgb patchSum(0.0), leafSum(0.0);
         for (std::uint32_t i = mesh.surfaceFirstPatch[s]; i < mesh.surfaceFirstPatch[s + 1]; ++i) {
-            CHECK(solution[i].x > 0);
+            // Only the floor's patches wholly under a block (cut along the footprints) see nothing.
+            if (scene.surfaces[s].name != "floor") CHECK(solution[i].x > 0);
             patchSum += mesh.patches[i].area * solution[i];
         }
         for (const ElementIndex e : tree.leaves())
