@@ -14,7 +14,7 @@ namespace radiant::detail {
 namespace {
 
 struct Line {
-    glm::dvec3 point{0.0}, end{0.0};  ///< the contact segment the line runs through
+    glm::dvec3 point{0.0};  ///< a point of the contact
     glm::dvec3 across{0.0};  ///< unit, in the face's plane, perpendicular to the line
 };
 
@@ -196,8 +196,12 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                 }
                 if (lowest < -planeTolerance || highest <= planeTolerance) return;
                 if (lengthInside(face.vertices, face.normal, edge.a, edge.b, snap) <= snap) return;
-                const glm::dvec3 along = glm::normalize(edge.b - edge.a);
-                lines[f].push_back({edge.a, edge.b, glm::normalize(glm::cross(face.normal, along))});
+                // Ordered ends, so the same contact read from a file (floats, another winding) makes the
+                // same line.
+                const bool ordered = lexicographicallyLess(edge.a, edge.b);
+                const glm::dvec3& a = ordered ? edge.a : edge.b;
+                const glm::dvec3& b = ordered ? edge.b : edge.a;
+                lines[f].push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a)))});
                 any = true;
             });
         }
@@ -216,20 +220,22 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                 if (coplanar) applied[g].insert(applied[g].end(), lines[f].begin(), lines[f].end());
             }
         }
-        // A line cuts only the pieces its contact segment crosses, so a floor with many things on it
-        // is not crossed by every footprint's lines from wall to wall.
+        // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's.
+        for (auto& faceLines : applied)
+            std::sort(faceLines.begin(), faceLines.end(),
+                      [](const Line& l, const Line& r) { return lexicographicallyLess(l.point, r.point); });
+        // Each line cuts every piece of the plane it crosses (ContactCuts.h: why not only the pieces its
+        // contact segment crosses).
         std::vector<glm::dvec3> made;
         std::vector<std::vector<std::vector<glm::dvec3>>> pieces(surface.faces.size());
         for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
             if (applied[g].empty()) continue;
-            const glm::dvec3 normal = surface.faces[g].normal;
             std::vector<std::vector<glm::dvec3>> polygons{surface.faces[g].vertices}, next;
             std::vector<glm::dvec3> front, back;
             for (const Line& line : applied[g]) {
                 next.clear();
                 for (auto& polygon : polygons) {
-                    if (lengthInside(polygon, normal, line.point, line.end, 0) > snap &&
-                        split(polygon, line, snap, front, back, made)) {
+                    if (split(polygon, line, snap, front, back, made)) {
                         next.push_back(front);
                         next.push_back(back);
                     } else {
@@ -241,9 +247,8 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
             if (polygons.size() > 1) pieces[g] = std::move(polygons);
         }
 
-        // A cut ends on an edge that a piece or face beside it keeps whole (a piece the segment
-        // does not cross, a face of the surface out of the plane): that edge takes the cut's end as a
-        // corner, so the surface stays conforming. Such a polygon has corners on a straight side, which
+        // A cut ends on an edge that a face beside it keeps whole (a face of the surface out of the
+        // plane): that edge takes the cut's end as a corner, so the surface stays conforming. Such a polygon has corners on a straight side, which
         // a fan from a corner would turn into flat triangles; it is fanned from its centre instead.
         const double onEdge = 1e-7 * extent;
         for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
@@ -283,6 +288,10 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                 centre /= static_cast<double>(polygon.size());
                 for (std::size_t i = 0; i < corners.size(); ++i) convex.push_back({centre, corners[i], corners[(i + 1) % corners.size()]});
             }
+            // Each piece from its lowest corner, so the mesher's fan does not depend on where the face's
+            // corner list started.
+            for (auto& polygon : convex)
+                std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end(), lexicographicallyLess), polygon.end());
             if (changed) result[s][g] = std::move(convex);
         }
     }

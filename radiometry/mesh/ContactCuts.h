@@ -8,12 +8,16 @@
 // A contact is an edge of a face not parallel to this one, lying in this face's plane (within a
 // tolerance relative to the scene's size) with a part inside the face, whose face stands on this
 // face's front (a lid lying face down, a double-sided twin or a wall below the floor is none). The
-// contact's line cuts, in turn, each convex piece of the faces of the surface in that plane that its
-// segment crosses: a line leaves two convex pieces of a convex one, and a line that crosses an edge
-// two pieces share cuts both. Where a cut ends on an edge that stays whole (a piece the segment does
-// not reach, a face of the surface out of the plane), that edge takes the cut's end as a corner, and
-// its polygon, now with a corner on a straight side, is fanned into triangles from its centre: no
-// T-junction within a surface. Corners within the snap distance of a line count as on it, so a cut
+// contact's whole line cuts, in turn, every convex piece of the faces of the surface in that plane:
+// a line leaves two convex pieces of a convex one, and a line that crosses an edge two pieces share
+// cuts both. Cutting only the pieces the contact segment crosses was tried: the cuts then ended on
+// the footprint's lines, whose pieces took those ends as corners and were fanned from their centre,
+// and the thin triangles running away from the block's foot averaged its shadow with the open floor
+// (converged Gauss-Seidel at the Cornell short block's side over it 2.35% bright at 0.001 m^2 against
+// the path tracer; 0.71% with whole lines). Where a
+// cut ends on an edge of the surface out of the plane, that edge takes the cut's end as a corner,
+// and its polygon, now with a corner on a straight side, is fanned into triangles from its centre:
+// no T-junction within a surface. A floor with many things on it is crossed by all their lines. Corners within the snap distance of a line count as on it, so a cut
 // close to a corner or along an edge goes through it and leaves no sliver.
 #include <cstddef>
 #include <vector>
