@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/mesh/ContactCuts.h"
 
 namespace radiant {
 
@@ -48,6 +49,7 @@ bool polygonContains(const PatchPolygon& polygon, const glm::dvec3& point) {
 } // namespace
 
 ElementTree::ElementTree(const Scene& scene) {
+    const detail::ContactPolygons contacts = detail::cutAlongContacts(scene);
     surfaceFirstFace_.push_back(0);
     faceFirstRoot_.push_back(0);
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
@@ -57,13 +59,22 @@ ElementTree::ElementTree(const Scene& scene) {
             if (v.size() < 3)
                 throw RadiantError({scene.name, "surface '" + surface.name + "', face " + std::to_string(f)},
                                    "a face needs at least 3 corners, it has " + std::to_string(v.size()));
-            if (v.size() <= 4) {
-                roots_.push_back(append(makeElementPolygon(v), Node{kNoElement, kNoElement, s, 0}));
-            } else {
-                for (std::size_t i = 1; i + 1 < v.size(); ++i) {
-                    const std::array<glm::dvec3, 3> triangle{v[0], v[i], v[i + 1]};
+            // A face cut along contacts (ContactCuts.h) gets roots from its cut polygons, so no element
+            // straddles the footprint of what stands on it.
+            const auto addRoots = [&](const std::vector<glm::dvec3>& polygon) {
+                if (polygon.size() <= 4) {
+                    roots_.push_back(append(makeElementPolygon(polygon), Node{kNoElement, kNoElement, s, 0}));
+                    return;
+                }
+                for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
+                    const std::array<glm::dvec3, 3> triangle{polygon[0], polygon[i], polygon[i + 1]};
                     roots_.push_back(append(makeElementPolygon(triangle), Node{kNoElement, kNoElement, s, 0}));
                 }
+            };
+            if (contacts[s][f].empty()) {
+                addRoots(v);
+            } else {
+                for (const auto& polygon : contacts[s][f]) addRoots(polygon);
             }
             faceFirstRoot_.push_back(static_cast<std::uint32_t>(roots_.size()));
         }

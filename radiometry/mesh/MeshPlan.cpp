@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/mesh/VertexWelder.h"
 
 namespace radiant::detail {
@@ -119,7 +120,8 @@ std::string describe(double value) {
     return text;
 }
 
-SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double maxArea, double tolerance) {
+SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double maxArea, double tolerance,
+                        const std::vector<std::vector<std::vector<glm::dvec3>>>& contactPolygons) {
     const Surface& surface = scene.surfaces[surfaceIndex];
     SurfacePlan plan;
     VertexWelder welder(tolerance);
@@ -137,20 +139,14 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         return it->second;
     };
 
-    for (std::size_t f = 0; f < surface.faces.size(); ++f) {
-        const Face& face = surface.faces[f];
+    const auto addPolygon = [&](std::size_t f, const std::vector<glm::dvec3>& polygon) {
         std::vector<std::uint32_t> ids;
-        for (const glm::dvec3& v : face.vertices) {
-            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-                throw RadiantError({scene.name, "surface '" + surface.name + "', face " + std::to_string(f)},
-                                   "vertex (" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) +
-                                       ") is not finite");
-            }
+        for (const glm::dvec3& v : polygon) {
             const std::uint32_t id = welder.weld(v);
             if (ids.empty() || ids.back() != id) ids.push_back(id);
         }
         while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
-        if (ids.size() < 3 || !(face.area > 0)) continue;  // degenerate: nothing to light
+        if (ids.size() < 3) return;
 
         // Fan into quads (0, i, i+1, i+2), then one closing triangle: convex pieces of a convex face.
         const std::size_t n = ids.size();
@@ -164,6 +160,23 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         };
         for (; n - i >= 3; i += 2) addPiece(4);
         if (n - i == 2) addPiece(3);
+    };
+    for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+        const Face& face = surface.faces[f];
+        for (const glm::dvec3& v : face.vertices) {
+            if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+                throw RadiantError({scene.name, "surface '" + surface.name + "', face " + std::to_string(f)},
+                                   "vertex (" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) +
+                                       ") is not finite");
+            }
+        }
+        if (!(face.area > 0)) continue;  // degenerate: nothing to light
+        // A face cut along contacts (ContactCuts.h) is meshed as its convex cut polygons.
+        if (contactPolygons[f].empty()) {
+            addPolygon(f, face.vertices);
+        } else {
+            for (const auto& polygon : contactPolygons[f]) addPolygon(f, polygon);
+        }
     }
     plan.corners = welder.takePoints();
     // Collinear corners can leave a piece without area; it would only carry a NaN normal.
@@ -276,8 +289,9 @@ MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
     }
     MeshPlan plan;
     const double tolerance = weldTolerance(scene);
+    const ContactPolygons contacts = cutAlongContacts(scene);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        plan.surfaces.push_back(planSurface(scene, s, options.maxPatchArea, tolerance));
+        plan.surfaces.push_back(planSurface(scene, s, options.maxPatchArea, tolerance, contacts[s]));
         for (const Piece& piece : plan.surfaces.back().pieces) plan.patchCount += plan.surfaces.back().patchCount(piece);
     }
     return plan;

@@ -81,7 +81,8 @@ TEST_CASE("Cornell box: areas kept, every patch under the limit, no T-junctions"
         double smallest = 1e30;
         for (const Patch& p : mesh.patches) {
             CHECK(p.area <= maxArea * (1 + 4e-6));
-            smallest = std::min(smallest, p.area);
+            // The floor is cut along the blocks' footprints (ContactCuts.h), into pieces of any size.
+            if (cornell.surfaces[p.surface].name != "floor") smallest = std::min(smallest, p.area);
         }
         // Sized to the limit, not needlessly fine: no patch below a fifth of it.
         CHECK(smallest > maxArea / 5);

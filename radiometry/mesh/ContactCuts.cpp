@@ -1,0 +1,301 @@
+#include "radiometry/mesh/ContactCuts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <utility>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+namespace radiant::detail {
+namespace {
+
+struct Line {
+    glm::dvec3 point{0.0};  ///< a point of the contact
+    glm::dvec3 across{0.0};  ///< unit, in the face's plane, perpendicular to the line
+};
+
+struct SceneEdge {
+    glm::dvec3 a{0.0}, b{0.0};
+    std::uint32_t surface = 0, face = 0;
+};
+
+/// Edges of all faces in a uniform grid of cells, so a face only tests the edges near it.
+class EdgeGrid {
+public:
+    EdgeGrid(std::vector<SceneEdge> edges, glm::dvec3 lo, double cell) : edges_(std::move(edges)), lo_(lo), cell_(cell) {
+        for (std::uint32_t e = 0; e < edges_.size(); ++e) {
+            const Box box = boxOf(glm::min(edges_[e].a, edges_[e].b), glm::max(edges_[e].a, edges_[e].b));
+            if (box.cells() > kMaxCells) {
+                wide_.push_back(e);
+                continue;
+            }
+            forEach(box, [&](std::uint64_t key) { cells_[key].push_back(e); });
+        }
+        seen_.assign(edges_.size(), 0);
+    }
+
+    template <class Visit>
+    void near(const glm::dvec3& lo, const glm::dvec3& hi, Visit&& visit) {
+        ++stamp_;
+        const auto once = [&](std::uint32_t e) {
+            if (seen_[e] == stamp_) return;
+            seen_[e] = stamp_;
+            visit(edges_[e]);
+        };
+        for (std::uint32_t e : wide_) once(e);
+        const Box box = boxOf(lo, hi);
+        if (box.cells() > kMaxCells) {
+            for (std::uint32_t e = 0; e < edges_.size(); ++e) once(e);
+            return;
+        }
+        forEach(box, [&](std::uint64_t key) {
+            const auto found = cells_.find(key);
+            if (found != cells_.end())
+                for (std::uint32_t e : found->second) once(e);
+        });
+    }
+
+private:
+    static constexpr std::int64_t kMaxCells = 4096;
+    struct Box {
+        std::int64_t x0, y0, z0, x1, y1, z1;
+        [[nodiscard]] std::int64_t cells() const { return (x1 - x0 + 1) * (y1 - y0 + 1) * (z1 - z0 + 1); }
+    };
+    [[nodiscard]] std::int64_t index(double v, double lo) const {
+        return static_cast<std::int64_t>(std::clamp(std::floor((v - lo) / cell_), -1.0, 1e6));
+    }
+    [[nodiscard]] Box boxOf(const glm::dvec3& lo, const glm::dvec3& hi) const {
+        // One cell of margin: contacts are found within a tolerance, not exactly.
+        return {index(lo.x, lo_.x) - 1, index(lo.y, lo_.y) - 1, index(lo.z, lo_.z) - 1,
+                index(hi.x, lo_.x) + 1, index(hi.y, lo_.y) + 1, index(hi.z, lo_.z) + 1};
+    }
+    template <class Each>
+    static void forEach(const Box& b, Each&& each) {
+        for (std::int64_t x = b.x0; x <= b.x1; ++x)
+            for (std::int64_t y = b.y0; y <= b.y1; ++y)
+                for (std::int64_t z = b.z0; z <= b.z1; ++z)
+                    each(static_cast<std::uint64_t>(x) * 0x9E3779B97F4A7C15ull ^ static_cast<std::uint64_t>(y) * 0xC2B2AE3D27D4EB4Full ^
+                         static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull);
+    }
+
+    std::vector<SceneEdge> edges_;
+    glm::dvec3 lo_;
+    double cell_;
+    std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
+    std::vector<std::uint32_t> wide_;
+    std::vector<std::uint32_t> seen_;
+    std::uint32_t stamp_ = 0;
+};
+
+double planeDistance(const Face& face, const glm::dvec3& p) { return glm::dot(face.normal, p - face.vertices[0]); }
+
+/// Length of segment ab inside the convex polygon v (normal n), farther than `margin` from its edges.
+double lengthInside(const std::vector<glm::dvec3>& v, const glm::dvec3& n, const glm::dvec3& a, const glm::dvec3& b,
+                    double margin) {
+    double t0 = 0, t1 = 1;
+    for (std::size_t i = 0; i < v.size(); ++i) {
+        const glm::dvec3 inward = glm::normalize(glm::cross(n, v[(i + 1) % v.size()] - v[i]));
+        const double da = glm::dot(inward, a - v[i]) - margin, db = glm::dot(inward, b - v[i]) - margin;
+        if (da < 0 && db < 0) return 0;
+        if (da < 0) t0 = std::max(t0, da / (da - db));
+        if (db < 0) t1 = std::min(t1, da / (da - db));
+    }
+    return t1 > t0 ? (t1 - t0) * glm::distance(a, b) : 0;
+}
+
+bool lexicographicallyLess(const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+}
+
+/// Splits a convex polygon by the line; corners within `snap` of it count as on it. Returns false
+/// (and leaves the output empty) when the line does not cross the polygon's inside.
+bool split(const std::vector<glm::dvec3>& polygon, const Line& line, double snap, std::vector<glm::dvec3>& front,
+           std::vector<glm::dvec3>& back, std::vector<glm::dvec3>& made) {
+    std::vector<double> side(polygon.size());
+    bool anyFront = false, anyBack = false;
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const double s = glm::dot(line.across, polygon[i] - line.point);
+        side[i] = std::abs(s) < snap ? 0.0 : s;
+        anyFront |= side[i] > 0;
+        anyBack |= side[i] < 0;
+    }
+    if (!anyFront || !anyBack) return false;
+    front.clear();
+    back.clear();
+    for (std::size_t i = 0; i < polygon.size(); ++i) {
+        const std::size_t j = (i + 1) % polygon.size();
+        if (side[i] >= 0) front.push_back(polygon[i]);
+        if (side[i] <= 0) back.push_back(polygon[i]);
+        if ((side[i] > 0 && side[j] < 0) || (side[i] < 0 && side[j] > 0)) {
+            // The same point from both faces sharing the edge: computed from its endpoints in one order.
+            const bool ordered = lexicographicallyLess(polygon[i], polygon[j]);
+            const glm::dvec3& p = ordered ? polygon[i] : polygon[j];
+            const glm::dvec3& q = ordered ? polygon[j] : polygon[i];
+            const double sp = ordered ? side[i] : side[j], sq = ordered ? side[j] : side[i];
+            const glm::dvec3 cut = p + (sp / (sp - sq)) * (q - p);
+            front.push_back(cut);
+            back.push_back(cut);
+            made.push_back(cut);
+        }
+    }
+    return front.size() >= 3 && back.size() >= 3;
+}
+
+} // namespace
+
+ContactPolygons cutAlongContacts(const Scene& scene) {
+    ContactPolygons result(scene.surfaces.size());
+    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+    std::vector<SceneEdge> edges;
+    for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
+        result[s].resize(scene.surfaces[s].faces.size());
+        for (std::uint32_t f = 0; f < scene.surfaces[s].faces.size(); ++f) {
+            const auto& v = scene.surfaces[s].faces[f].vertices;
+            bool finite = true;
+            for (const glm::dvec3& p : v) finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+            if (!finite) continue;  // refused by the mesher, with its name
+            for (std::size_t i = 0; i < v.size(); ++i) {
+                lo = glm::min(lo, v[i]);
+                hi = glm::max(hi, v[i]);
+                edges.push_back({v[i], v[(i + 1) % v.size()], s, f});
+            }
+        }
+    }
+    if (!(lo.x <= hi.x)) return result;
+    const double extent = glm::length(hi - lo);
+    if (!(extent > 0) || !std::isfinite(extent)) return result;
+    const double planeTolerance = kContactPlaneTolerance * extent, snap = kContactSnap * extent;
+    const auto usable = [](const Face& face) { return face.vertices.size() >= 3 && face.area > 0 && std::isfinite(face.area); };
+
+    EdgeGrid grid(std::move(edges), lo, extent / 64);
+    for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
+        const Surface& surface = scene.surfaces[s];
+        // Lines per face of this surface that some contact cuts.
+        std::vector<std::vector<Line>> lines(surface.faces.size());
+        bool any = false;
+        for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
+            const Face& face = surface.faces[f];
+            if (!usable(face)) continue;
+            glm::dvec3 flo(std::numeric_limits<double>::max()), fhi(std::numeric_limits<double>::lowest());
+            for (const glm::dvec3& v : face.vertices) flo = glm::min(flo, v), fhi = glm::max(fhi, v);
+            grid.near(flo, fhi, [&](const SceneEdge& edge) {
+                if (edge.surface == s && edge.face == f) return;
+                const Face& other = scene.surfaces[edge.surface].faces[edge.face];
+                if (!usable(other) || std::abs(glm::dot(other.normal, face.normal)) > 1 - 1e-6) return;
+                if (std::abs(planeDistance(face, edge.a)) > planeTolerance || std::abs(planeDistance(face, edge.b)) > planeTolerance)
+                    return;
+                // The other face must stand on this face's front (a wall below a floor lights nothing here).
+                double lowest = 0, highest = 0;
+                for (const glm::dvec3& v : other.vertices) {
+                    lowest = std::min(lowest, planeDistance(face, v));
+                    highest = std::max(highest, planeDistance(face, v));
+                }
+                if (lowest < -planeTolerance || highest <= planeTolerance) return;
+                if (lengthInside(face.vertices, face.normal, edge.a, edge.b, snap) <= snap) return;
+                // Ordered ends, so the same contact read from a file (floats, another winding) makes the
+                // same line.
+                const bool ordered = lexicographicallyLess(edge.a, edge.b);
+                const glm::dvec3& a = ordered ? edge.a : edge.b;
+                const glm::dvec3& b = ordered ? edge.b : edge.a;
+                lines[f].push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a)))});
+                any = true;
+            });
+        }
+        if (!any) continue;
+
+        // Every face of the surface in the plane of a cut face takes the cut face's lines.
+        std::vector<std::vector<Line>> applied(surface.faces.size());
+        for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
+            if (lines[f].empty()) continue;
+            const Face& face = surface.faces[f];
+            for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+                const Face& other = surface.faces[g];
+                if (!usable(other) || glm::dot(other.normal, face.normal) < 1 - 1e-6) continue;
+                bool coplanar = true;
+                for (const glm::dvec3& v : other.vertices) coplanar &= std::abs(planeDistance(face, v)) <= planeTolerance;
+                if (coplanar) applied[g].insert(applied[g].end(), lines[f].begin(), lines[f].end());
+            }
+        }
+        // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's.
+        for (auto& faceLines : applied)
+            std::sort(faceLines.begin(), faceLines.end(),
+                      [](const Line& l, const Line& r) { return lexicographicallyLess(l.point, r.point); });
+        // Each line cuts every piece of the plane it crosses (ContactCuts.h: why not only the pieces its
+        // contact segment crosses).
+        std::vector<glm::dvec3> made;
+        std::vector<std::vector<std::vector<glm::dvec3>>> pieces(surface.faces.size());
+        for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+            if (applied[g].empty()) continue;
+            std::vector<std::vector<glm::dvec3>> polygons{surface.faces[g].vertices}, next;
+            std::vector<glm::dvec3> front, back;
+            for (const Line& line : applied[g]) {
+                next.clear();
+                for (auto& polygon : polygons) {
+                    if (split(polygon, line, snap, front, back, made)) {
+                        next.push_back(front);
+                        next.push_back(back);
+                    } else {
+                        next.push_back(std::move(polygon));
+                    }
+                }
+                std::swap(polygons, next);
+            }
+            if (polygons.size() > 1) pieces[g] = std::move(polygons);
+        }
+
+        // A cut ends on an edge that a face beside it keeps whole (a face of the surface out of the
+        // plane): that edge takes the cut's end as a corner, so the surface stays conforming. Such a polygon has corners on a straight side, which
+        // a fan from a corner would turn into flat triangles; it is fanned from its centre instead.
+        const double onEdge = 1e-7 * extent;
+        for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+            if (!usable(surface.faces[g])) continue;
+            std::vector<std::vector<glm::dvec3>> polygons =
+                pieces[g].empty() ? std::vector<std::vector<glm::dvec3>>{surface.faces[g].vertices} : pieces[g];
+            std::vector<std::vector<glm::dvec3>> convex;
+            bool changed = !pieces[g].empty();
+            for (const auto& polygon : polygons) {
+                std::vector<glm::dvec3> corners;
+                bool inserted = false;
+                for (std::size_t i = 0; i < polygon.size(); ++i) {
+                    const glm::dvec3 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+                    corners.push_back(p);
+                    const double length2 = glm::dot(q - p, q - p);
+                    if (!(length2 > 0)) continue;
+                    std::vector<std::pair<double, glm::dvec3>> onThis;
+                    for (const glm::dvec3& x : made) {
+                        const double t = glm::dot(x - p, q - p) / length2;
+                        if (t * std::sqrt(length2) <= onEdge || (1 - t) * std::sqrt(length2) <= onEdge) continue;
+                        if (glm::distance(p + t * (q - p), x) <= onEdge) onThis.emplace_back(t, x);
+                    }
+                    std::sort(onThis.begin(), onThis.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+                    for (const auto& [t, x] : onThis) {
+                        if (glm::distance(corners.back(), x) <= onEdge) continue;
+                        corners.push_back(x);
+                        inserted = true;
+                    }
+                }
+                if (!inserted) {
+                    convex.push_back(polygon);
+                    continue;
+                }
+                changed = true;
+                glm::dvec3 centre(0.0);
+                for (const glm::dvec3& c : polygon) centre += c;
+                centre /= static_cast<double>(polygon.size());
+                for (std::size_t i = 0; i < corners.size(); ++i) convex.push_back({centre, corners[i], corners[(i + 1) % corners.size()]});
+            }
+            // Each piece from its lowest corner, so the mesher's fan does not depend on where the face's
+            // corner list started.
+            for (auto& polygon : convex)
+                std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end(), lexicographicallyLess), polygon.end());
+            if (changed) result[s][g] = std::move(convex);
+        }
+    }
+    return result;
+}
+
+} // namespace radiant::detail

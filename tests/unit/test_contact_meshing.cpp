@@ -1,0 +1,158 @@
+// Contact-aware meshing (issue 14, radiometry/mesh/ContactCuts.h): a floor with a box standing on it
+// is cut along the box's footprint, so no floor patch lies partly under the box. Checked by geometry
+// (each patch wholly inside or outside the footprint, area kept, the floor conforming) and by physics:
+// in a closed furnace with the box on the floor every open patch reaches B = E / (1 - rho); a patch
+// partly under the box gathers over its covered part too and came out low.
+#include <doctest/doctest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/ContactCuts.h"
+#include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/solver/Solver.h"
+#include "tests/support/MeshTopology.h"
+#include "tests/support/Relative.h"
+
+using namespace radiant;
+using radiant::test::countTJunctions;
+using radiant::test::eulerCharacteristic;
+using radiant::test::makeFace;
+
+namespace {
+
+/// The box's footprint on z = 0: a 0.3 m square centred at (0.45, 0.55), turned 20 degrees, so
+/// its sides cross the floor's grid lines at an angle.
+std::array<glm::dvec3, 4> footprint() {
+    const double turn = 20 * std::numbers::pi / 180, half = 0.15;
+    const glm::dvec3 centre(0.45, 0.55, 0), u(std::cos(turn), std::sin(turn), 0), v(-std::sin(turn), std::cos(turn), 0);
+    return {centre - half * u - half * v, centre + half * u - half * v, centre + half * u + half * v,
+            centre - half * u + half * v};
+}
+
+/// A 0.3 m high box standing on the footprint: four sides facing out and a top, no bottom.
+std::vector<Face> boxFaces() {
+    const auto f = footprint();
+    const glm::dvec3 up(0, 0, 0.3);
+    std::vector<Face> faces;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 a = f[i], b = f[(i + 1) % 4];
+        faces.push_back(makeFace({a, b, b + up, a + up}));
+    }
+    faces.push_back(makeFace({f[0] + up, f[1] + up, f[2] + up, f[3] + up}));
+    return faces;
+}
+
+/// The unit floor z = 0 facing up, as one quad or as two triangles (as a glTF file stores it).
+std::vector<Face> floorFaces(bool triangles) {
+    if (!triangles) return {makeFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})};
+    return {makeFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}}), makeFace({{0, 0, 0}, {1, 1, 0}, {0, 1, 0}})};
+}
+
+/// Signed distance of a floor point into the footprint (positive inside): the least over its sides.
+double insideFootprint(const glm::dvec3& p) {
+    const auto f = footprint();
+    double least = 1e9;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 along = glm::normalize(f[(i + 1) % 4] - f[i]);
+        least = std::min(least, glm::dot(glm::cross(glm::dvec3(0, 0, 1), along), p - f[i]));
+    }
+    return least;
+}
+
+Scene grey(std::vector<Surface> surfaces, double exitance) {
+    Scene scene;
+    scene.name = "box on a floor";
+    scene.materials = {{"grey", Rgb{0.5}, ExitanceRgb{Rgb{exitance}}}};
+    scene.surfaces = std::move(surfaces);
+    return scene;
+}
+
+} // namespace
+
+TEST_SUITE("scenes") {
+
+TEST_CASE("a floor is cut along the footprint of a box standing on it: no patch straddles it, area kept, conforming") {
+    for (const bool triangles : {false, true}) {
+        CAPTURE(triangles);
+        const Scene scene = grey({{"floor", 0, floorFaces(triangles), "test"}, {"box", 0, boxFaces(), "test"}}, 0);
+        const PatchMesh mesh = meshScene(scene, {0.005});
+        double area = 0, inside = 0;
+        std::size_t straddling = 0;
+        for (std::size_t p = mesh.surfaceFirstPatch[0]; p < mesh.surfaceFirstPatch[1]; ++p) {
+            const Patch& patch = mesh.patches[p];
+            double deepest = -1e9, shallowest = 1e9;
+            for (std::size_t c = 0; c < patch.cornerCount; ++c) {
+                const double d = insideFootprint(mesh.vertices[patch.corners[c]]);
+                deepest = std::max(deepest, d);
+                shallowest = std::min(shallowest, d);
+            }
+            // Corners within the cut's snap distance of a footprint line count as on it.
+            const double snap = detail::kContactSnap * std::sqrt(1 + 1 + 0.3 * 0.3);
+            if (deepest > snap && shallowest < -snap) ++straddling;
+            area += patch.area;
+            if (insideFootprint(patch.centroid) > 0) inside += patch.area;
+        }
+        CHECK(straddling == 0);
+        CHECK(area == radiant::test::relativeTo(1.0, 1e-9));
+        CHECK(inside == radiant::test::relativeTo(0.09, 1e-3));
+        CHECK(eulerCharacteristic(mesh, 0) == 1);
+        CHECK(countTJunctions(mesh, 0, 0.05) == 0);
+        for (const Patch& patch : mesh.patches) CHECK(patch.area <= 0.005 * (1 + 1e-5));
+    }
+}
+
+TEST_CASE("a box's own top and a twin coplanar face cut nothing: a floor with nothing on it is one grid") {
+    // Edges lying in the floor's plane but of a face parallel to it (a lid resting face down, a
+    // double-sided twin) and edges of faces below the floor are no contacts.
+    const auto f = footprint();
+    Face lid = makeFace({f[3], f[2], f[1], f[0]});  // facing down onto the floor
+    std::vector<Face> below;
+    for (std::size_t i = 0; i < 4; ++i) {
+        const glm::dvec3 a = f[i], b = f[(i + 1) % 4], down(0, 0, -0.3);
+        below.push_back(makeFace({b, a, a + down, b + down}));
+    }
+    const Scene scene = grey({{"floor", 0, floorFaces(false), "test"}, {"lid", 0, {lid}, "test"}, {"below", 0, below, "test"}}, 0);
+    const PatchMesh mesh = meshScene(scene, {0.01 * (1 + 1e-6)});
+    CHECK(mesh.surfaceFirstPatch[1] - mesh.surfaceFirstPatch[0] == 100);
+}
+
+TEST_CASE("closed furnace with a box standing on the floor: every open patch at E / (1 - rho), the floor along the box too") {
+    // A unit room facing in, the box inside facing out; E = 1, rho = 0.5 everywhere, so the closed
+    // form is B = 2 on every patch that sees only the enclosure (the floor under the box sees the
+    // box's backs and is left out).
+    std::vector<Face> ceiling{makeFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})};
+    std::vector<Face> walls{makeFace({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}), makeFace({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}),
+                            makeFace({{1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {0, 1, 0}}), makeFace({{0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {0, 0, 0}})};
+    const Scene scene = grey({{"floor", 0, floorFaces(false), "test"}, {"ceiling", 0, ceiling, "test"},
+                              {"walls", 0, walls, "test"}, {"box", 0, boxFaces(), "test"}},
+                             1.0);
+    const PatchMesh mesh = meshScene(scene, {0.01});
+    SolverOptions options;
+    options.rays = std::make_shared<const RayCaster>(scene);
+    auto solver = makeSolver(SolverMethod::GaussSeidel, scene, mesh, options);
+    for (std::size_t k = 0; k < 500 && solver->lastStats().residual > 1e-7; ++k) solver->step();
+    REQUIRE(solver->lastStats().residual <= 1e-7);
+    const std::vector<Rgb>& b = solver->solution();
+    double worstFloor = 0, worst = 0;
+    for (std::size_t i = 0; i < mesh.size(); ++i) {
+        const Patch& patch = mesh.patches[i];
+        if (patch.surface == 0 && insideFootprint(patch.centroid) > 0) continue;
+        const double error = std::abs(b[i].x / 2.0 - 1);
+        worst = std::max(worst, error);
+        if (patch.surface == 0 && insideFootprint(patch.centroid) > -0.1) worstFloor = std::max(worstFloor, error);
+    }
+    CAPTURE(worstFloor);
+    // Form factors sum to 1 per row to quadrature accuracy (test_comparison.cpp: the furnace within 1%).
+    CHECK(worst < 0.01);
+    CHECK(worstFloor < 0.01);
+}
+
+}
