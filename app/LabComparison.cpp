@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdio>
 #include <string>
 
@@ -84,7 +85,18 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
         second_->setSettings(settings);
     }
     if (!showingDifference) return;
-    const SolutionDifference& d = differencer_.update(*live_.current, b);
+    // While either side solves, the difference is redone at most kDifferenceHz times a second: each
+    // redo recolours and uploads the finer mesh, and two running solvers publish twice as often as
+    // one (the side-by-side view uploads only what changed on each side). At rest it is redone at once.
+    const auto now = std::chrono::steady_clock::now();
+    const bool solving = live_.current->running || b.running;
+    if (!solving || differencer_.current().generation == 0 ||
+        now - differenceComputedAt_ >= std::chrono::duration<double>(1.0 / kDifferenceHz)) {
+        const std::uint64_t before = differencer_.current().generation;
+        differencer_.update(*live_.current, b);
+        if (differencer_.current().generation != before) differenceComputedAt_ = now;
+    }
+    const SolutionDifference& d = differencer_.current();
     if (!d.mesh) return;
     if (!difference_) difference_.emplace();
     if (d.mesh != differenceMesh_) {

@@ -3,6 +3,7 @@
 // LiveSolve): a renderer for solution B and one for the difference view, the split of the 3D view
 // into halves drawn with one camera, and the labels and legend over them. Off, it draws the one
 // solution in the whole view as before. Main thread only (GL); GL-free header.
+#include <chrono>
 #include <cstddef>
 #include <memory>
 #include <optional>
@@ -45,12 +46,15 @@ public:
     static constexpr float kDifferenceTop = 1.0f;
     /// The difference view outlines its patches up to this many (the lab's default meshes).
     static constexpr std::size_t kMostPatchesWithEdges = 8000;
+    /// How often the difference view is redone while either side solves.
+    static constexpr double kDifferenceHz = 10.0;
 
 private:
     LiveSolve& live_;
     std::optional<render::PatchRenderer> second_, difference_;
     std::shared_ptr<const Scene> secondMaterials_;
     SolutionDifferencer differencer_;
+    std::chrono::steady_clock::time_point differenceComputedAt_{};
     std::uint64_t differenceShown_ = 0;   ///< the difference generation uploaded
     std::shared_ptr<const PatchMesh> differenceMesh_;
     std::uint64_t differenceMeshKey_ = 0;  ///< bumped when the difference's mesh changes
