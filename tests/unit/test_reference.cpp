@@ -186,7 +186,8 @@ TEST_CASE("inside a closed box: a small ceiling emitter's direct light, and one 
     SUBCASE("direct light on the floor: E = M F(dA -> emitter), also beside a wall and in a corner") {
         const Scene scene = box(Rgb(0.0));
         const RayCaster rays(scene);
-        for (const auto& [x, z] : std::vector<std::pair<double, double>>{{0.5, 0.5}, {0.1, 0.85}, {0.02, 0.5}, {0.97, 0.03}}) {
+        for (const auto& point : std::vector<std::pair<double, double>>{{0.5, 0.5}, {0.1, 0.85}, {0.02, 0.5}, {0.97, 0.03}}) {
+            const double x = point.first, z = point.second;  // not a structured binding: CAPTURE's lambda takes them
             CAPTURE(x);
             CAPTURE(z);
             // Direct light alone: one shadow ray and one escaping path a sample, so 0.05% is cheap.
@@ -207,7 +208,8 @@ TEST_CASE("inside a closed box: a small ceiling emitter's direct light, and one 
                                                0.1813418916891810, 0.1813418916891810, 0.1568533229389436,
                                                0.1111905172266872, 0.0506142681451881};
         constexpr int panels = 16;
-        for (const auto& [x, z] : std::vector<std::pair<double, double>>{{0.3, 0.5}, {0.1, 0.1}}) {
+        for (const auto& point : std::vector<std::pair<double, double>>{{0.3, 0.5}, {0.1, 0.1}}) {
+            const double x = point.first, z = point.second;
             CAPTURE(x);
             CAPTURE(z);
             double expected = 0;
