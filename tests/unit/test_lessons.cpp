@@ -152,7 +152,8 @@ TEST_CASE("a session saved while comparing two methods, in photometric units, re
     // Not comparing: "compare": false, so a lab that is comparing when the session opens stops.
     state.comparison.settings.reset();
     std::size_t ends = 0;
-    for (const Action& action : parseLesson(sessionText(state, "now"), "session.json").steps[0].actions)
+    const Lesson off = parseLesson(sessionText(state, "now"), "session.json");  // held: a range over a temporary's member dangles
+    for (const Action& action : off.steps[0].actions)
         if (const auto* c = std::get_if<Compare>(&action)) ends += c->settings ? 0 : 1;
     CHECK(ends == 1);
 }
