@@ -34,17 +34,16 @@ Scene loadSceneArgument(const std::string& nameOrPath) {
     return scene;
 }
 
-MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing,
-                              double matrixBudgetBytes) {
+MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing) {
     if (!named.empty()) return {parseMethod(named), ""};
-    MethodChoice choice = chooseDefaultMethod(scene, meshing, matrixBudgetBytes);
+    MethodChoice choice = chooseDefaultMethod(scene, meshing);
     std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(choice.method)).c_str(), choice.reason.c_str());
     return choice;
 }
 
 std::string methodOptionHelp() {
     return methodNameList() + "; default: " + std::string(methodName(kSolveDefaults.method)) + " up to " +
-           std::to_string(kMatrixMethodMaxPatches) + " patches (while its matrix fits), hierarchical beyond";
+           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond";
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {

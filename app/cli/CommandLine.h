@@ -39,8 +39,7 @@ Scene loadSceneArgument(const std::string& nameOrPath);
 /// The --method of solve, probe and render: the one named, else the default for the scene's size
 /// (DefaultMethod.h), said on stderr in one line ("radiant: method: hierarchical (12,000 patches:
 /// ...)"). The reason is empty for a named method.
-MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing,
-                              double matrixBudgetBytes);
+MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing);
 /// The --method help: the names and how the default is chosen.
 std::string methodOptionHelp();
 

@@ -83,7 +83,7 @@ int runProbe(const ProbeCommandOptions& options) {
     const std::optional<std::size_t> target = chooseTarget(scene, options.target);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const MethodChoice choice = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes);
+    const MethodChoice choice = methodForCommand(options.method, scene, meshing);
     const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
     // One BVH for the scene: the probe's visibility and the solver's share it.

@@ -103,7 +103,7 @@ int runRender(const RenderOptions& options) {
     const Scene& scene = loaded.scene;
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const SolverMethod method = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes).method;
+    const SolverMethod method = methodForCommand(options.method, scene, meshing).method;
     const PatchMesh mesh = meshScene(scene, meshing);
     // One view for the picture and for importance's refinement: what is drawn is what was refined.
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);

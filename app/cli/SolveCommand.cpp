@@ -88,7 +88,7 @@ int runSolve(const SolveOptions& options) {
     const Scene scene = loadSceneArgument(options.scene);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const MethodChoice choice = methodForCommand(options.method, scene, meshing, SolverOptions{}.matrixBudgetBytes);
+    const MethodChoice choice = methodForCommand(options.method, scene, meshing);
     const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
     const double meshSeconds = secondsSince(meshStart);

@@ -42,8 +42,8 @@ struct Snapshot {
     std::shared_ptr<const RayCaster> rays;
     std::vector<Rgb> radiosity;             ///< W/m^2 per patch and band; empty before a solver exists
     SolverMethod method = kSolveDefaults.method;
-    /// Why `method` was chosen when the user has not picked one for this scene ("12,000 patches: a
-    /// Gauss-Seidel matrix would need ..."; DefaultMethod.h); empty once the user picks.
+    /// Why `method` was chosen when the user has not picked one for this scene ("12,000 patches:
+    /// progressive refinement's time grows ..."; DefaultMethod.h); empty once the user picks.
     std::string methodReason;
     IterationStats stats;                   ///< of the last step
     SolveHistory history;                   ///< every step of the segment being solved (ConvergenceRecord.h)

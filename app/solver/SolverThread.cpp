@@ -388,7 +388,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                                             formFactorMatrixPeakBytes(state.mesh->size()) > options_.matrixBudgetBytes;
                 if (!state.methodPicked || pickDoesNotFit) {
                     state.methodPicked = false;
-                    MethodChoice choice = chooseDefaultMethod(state.mesh->size(), options_.matrixBudgetBytes);
+                    MethodChoice choice = chooseDefaultMethod(state.mesh->size());
                     state.method = choice.method;
                     state.methodReason = std::move(choice.reason);
                 }

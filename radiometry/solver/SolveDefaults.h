@@ -8,12 +8,15 @@
 namespace radiant {
 
 struct SolveDefaults {
-    /// While its matrix is small (DefaultMethod.h: chooseDefaultMethod picks hierarchical beyond).
-    SolverMethod method = SolverMethod::GaussSeidel;
-    /// m^2: 2,170 patches in the Cornell box, where Gauss-Seidel is within 0.74% mean and 1.24%
-    /// worst of the path tracer at 10 points; 5.9% / 20% at 0.01 m^2 (260 patches). The table and
-    /// the cost (seconds of form factors) are in docs/ARCHITECTURE.md, "Defaults". MeshingOptions'
-    /// own 0.01 is the library's, for code that meshes without asking.
+    /// While the mesh is small (DefaultMethod.h: chooseDefaultMethod picks hierarchical beyond).
+    /// Within 0.33% mean / 1.6% worst of the path tracer at the Cornell box's 18 points in 1.46 s,
+    /// where Gauss-Seidel is 0.24% / 0.94% after 9.5 s of form factors (README, the accuracy table).
+    SolverMethod method = SolverMethod::Progressive;
+    /// m^2: 2,805 patches in the Cornell box (its floor cut along the blocks' footprints), where
+    /// converged Gauss-Seidel is within 0.24% mean and 0.94% worst of the path tracer at the accuracy
+    /// bench's 18 points; at 0.01 m^2 (260 patches, before the cut) 5.9% / 20% at 10 points. The
+    /// tables are in docs/ARCHITECTURE.md, "Defaults". MeshingOptions' own 0.01 is the library's, for
+    /// code that meshes without asking.
     double maxPatchArea = 0.001;
     /// Stop when the method's residual (Solver.h) falls below this.
     double tolerance = 1e-4;

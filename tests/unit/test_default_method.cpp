@@ -1,6 +1,6 @@
 // ctest-labels: threads
-// The default method fits the scene (#20 item 4): Gauss-Seidel while its matrix is small, hierarchical
-// beyond, the same choice in `solve`, `probe`, `render` and the lab, each saying why; an explicit
+// The default method fits the scene (#20 item 4): progressive refinement while the mesh is small,
+// hierarchical beyond, never a form-factor matrix, the same choice in `solve`, `probe`, `render` and the lab, each saying why; an explicit
 // method still wins; the lab's refusal names its meshing slider, the command line's its flag.
 #include <doctest/doctest.h>
 
@@ -46,53 +46,44 @@ double areaFor(std::size_t patches) { return 6.0 / static_cast<double>(patches);
 
 TEST_SUITE("default method") {
 
-TEST_CASE("the Cornell box keeps Gauss-Seidel at the default meshing, and says why") {
+TEST_CASE("the Cornell box gets progressive refinement at the default meshing, and says why") {
     const Scene box = makeCornellBox();
     const MeshingOptions meshing{kSolveDefaults.maxPatchArea};
     const std::size_t patches = estimatePatchCount(box, meshing);
     REQUIRE(patches == 2805);  // 2,170 before the floor was cut along the blocks' footprints (ContactCuts.h)
-    const MethodChoice choice = chooseDefaultMethod(box, meshing, SolverOptions{}.matrixBudgetBytes);
-    CHECK(choice.method == SolverMethod::GaussSeidel);
+    const MethodChoice choice = chooseDefaultMethod(box, meshing);
+    CHECK(choice.method == SolverMethod::Progressive);
     CHECK(choice.method == kSolveDefaults.method);
     INFO(choice.reason);
-    CHECK(contains(choice.reason, "2,805 patches: the Gauss-Seidel matrix needs up to "));
-    CHECK(contains(choice.reason, "hierarchical above " ));
+    CHECK(contains(choice.reason, "2,805 patches: progressive refinement, "));
+    CHECK(contains(choice.reason, "hierarchical above 3,000 patches"));
 }
 
-TEST_CASE("above the threshold the default is hierarchical, with the matrix it avoids") {
-    const double budget = SolverOptions{}.matrixBudgetBytes;
-    CHECK(chooseDefaultMethod(kMatrixMethodMaxPatches, budget).method == SolverMethod::GaussSeidel);
-    CHECK(chooseDefaultMethod(kMatrixMethodMaxPatches + 1, budget).method == SolverMethod::Hierarchical);
+TEST_CASE("above the threshold the default is hierarchical, and the reason says why") {
+    CHECK(chooseDefaultMethod(kProgressiveMaxPatches).method == SolverMethod::Progressive);
+    CHECK(chooseDefaultMethod(kProgressiveMaxPatches + 1).method == SolverMethod::Hierarchical);
 
-    const MethodChoice large = chooseDefaultMethod(12'000, budget);
-    CHECK(large.method == SolverMethod::Hierarchical);
-    INFO(large.reason);
-    char bytes[32];
-    std::snprintf(bytes, sizeof bytes, "%.1f GB", formFactorMatrixPeakBytes(12'000) / 1e9);
-    CHECK(contains(large.reason, std::string("12,000 patches: a Gauss-Seidel matrix would need up to ") + bytes));
-
-    // The classroom of the issue: 26,264 patches, over the 4 GB budget.
-    const MethodChoice classroom = chooseDefaultMethod(26'264, budget);
+    // The classroom of the issue: 26,264 patches, whose Gauss-Seidel matrix was refused.
+    const MethodChoice classroom = chooseDefaultMethod(26'264);
     CHECK(classroom.method == SolverMethod::Hierarchical);
-    CHECK(contains(classroom.reason, "26,264 patches"));
-    CHECK(contains(classroom.reason, "over the budget of 4.0 GB"));
+    INFO(classroom.reason);
+    CHECK(contains(classroom.reason, "26,264 patches: progressive refinement's time grows faster"));
+    CHECK(contains(classroom.reason, "hierarchical above 3,000 patches"));
 }
 
-TEST_CASE("a matrix over the budget is never the default, however few the patches") {
-    const MethodChoice choice = chooseDefaultMethod(100, 1000.0);
-    CHECK(choice.method == SolverMethod::Hierarchical);
-    INFO(choice.reason);
-    CHECK(contains(choice.reason, "over the budget"));
+TEST_CASE("no default method builds a form-factor matrix, however large the mesh") {
+    for (const std::size_t patches : {std::size_t{24}, kProgressiveMaxPatches, std::size_t{26'264}, std::size_t{1'000'000}})
+        CHECK_FALSE(methodInfo(chooseDefaultMethod(patches).method).traits.formFactorMatrix);
 }
 
 TEST_CASE("the scene's choice follows the patch count meshing will make") {
     const Scene cube = makeUnitCube();
-    for (const double area : {0.25, areaFor(kMatrixMethodMaxPatches * 9 / 10), areaFor(kMatrixMethodMaxPatches * 2)}) {
+    for (const double area : {0.25, areaFor(kProgressiveMaxPatches * 9 / 10), areaFor(kProgressiveMaxPatches * 2)}) {
         const MeshingOptions meshing{area};
         const std::size_t patches = meshScene(cube, meshing).size();
-        CHECK(chooseDefaultMethod(cube, meshing, 4e9).method == chooseDefaultMethod(patches, 4e9).method);
-        CHECK(chooseDefaultMethod(cube, meshing, 4e9).method ==
-              (patches > kMatrixMethodMaxPatches ? SolverMethod::Hierarchical : SolverMethod::GaussSeidel));
+        CHECK(chooseDefaultMethod(cube, meshing).method == chooseDefaultMethod(patches).method);
+        CHECK(chooseDefaultMethod(cube, meshing).method ==
+              (patches > kProgressiveMaxPatches ? SolverMethod::Hierarchical : SolverMethod::Progressive));
     }
 }
 
@@ -106,10 +97,10 @@ TEST_CASE("radiant solve without --method picks by size and says so, --method st
     INFO(chosen.err);
     REQUIRE(chosen.status == 0);
     CHECK(contains(chosen.err, "radiant: method: hierarchical ("));
-    CHECK(contains(chosen.err, "over the budget"));
+    CHECK(contains(chosen.err, "hierarchical above 3,000 patches"));
     const nlohmann::json report = nlohmann::json::parse(chosen.out);
     CHECK(report["method"] == "hierarchical");
-    CHECK(contains(report["method_reason"].get<std::string>(), "patches: a Gauss-Seidel matrix would need"));
+    CHECK(contains(report["method_reason"].get<std::string>(), "patches: progressive refinement's time grows"));
 
     const Run named = runRadiant("solve unit-cube --method gauss-seidel --max-patch-area " + areaText);
     INFO(named.err);
@@ -121,8 +112,8 @@ TEST_CASE("radiant solve without --method picks by size and says so, --method st
     const Run small = runRadiant("solve unit-cube --max-patch-area 0.25 --json -");
     INFO(small.err);
     REQUIRE(small.status == 0);
-    CHECK(contains(small.err, "radiant: method: gauss-seidel (24 patches: "));
-    CHECK(nlohmann::json::parse(small.out)["method"] == "gauss-seidel");
+    CHECK(contains(small.err, "radiant: method: progressive (24 patches: "));
+    CHECK(nlohmann::json::parse(small.out)["method"] == "progressive");
     const Run jacobi = runRadiant("solve unit-cube --method jacobi --max-patch-area 0.25 --json -");
     REQUIRE(jacobi.status == 0);
     CHECK(nlohmann::json::parse(jacobi.out)["method_reason"] == "given by --method");
@@ -132,13 +123,13 @@ TEST_CASE("radiant probe chooses the same way and reports it in its JSON") {
     const Run run = runRadiant("probe unit-cube --point 0.5,0,0.5 --normal 0,1,0 --max-patch-area 0.25");
     INFO(run.err);
     REQUIRE(run.status == 0);
-    CHECK(contains(run.err, "radiant: method: gauss-seidel (24 patches: "));
+    CHECK(contains(run.err, "radiant: method: progressive (24 patches: "));
     const nlohmann::json out = nlohmann::json::parse(run.out);
-    CHECK(out["method"] == "gauss-seidel");
+    CHECK(out["method"] == "progressive");
     CHECK(contains(out["method_reason"].get<std::string>(), "24 patches"));
 }
 
-TEST_CASE("the lab opens a scene too large for a matrix with hierarchical and no error, and says why") {
+TEST_CASE("the lab opens a scene too large for progressive refinement with hierarchical and no error, and says why") {
     // No matrix method may be built: computing one for this many patches is what the default avoids.
     std::atomic<int> matrixBuilds{0};
     const SolverFactory factory = [&](SolverMethod method, const Scene& scene, const PatchMesh& mesh,
@@ -151,7 +142,7 @@ TEST_CASE("the lab opens a scene too large for a matrix with hierarchical and no
     };
     SolverThread thread({}, factory);
     auto cube = std::make_shared<const Scene>(makeUnitCube());
-    thread.send(command::LoadScene{cube, MeshingOptions{areaFor(kMatrixMethodMaxPatches * 3 / 2)}});
+    thread.send(command::LoadScene{cube, MeshingOptions{areaFor(kProgressiveMaxPatches * 3 / 2)}});
     thread.send(command::Step{1});
     thread.waitUntilIdle();
     auto snapshot = thread.snapshot();
@@ -159,17 +150,17 @@ TEST_CASE("the lab opens a scene too large for a matrix with hierarchical and no
     CHECK(snapshot->error.empty());
     CHECK(matrixBuilds.load() == 0);
     REQUIRE(snapshot->mesh);
-    CHECK(snapshot->mesh->size() > kMatrixMethodMaxPatches);
+    CHECK(snapshot->mesh->size() > kProgressiveMaxPatches);
     CHECK(snapshot->method == SolverMethod::Hierarchical);
     CHECK(snapshot->stats.iteration == 1);
-    CHECK(contains(snapshot->methodReason, "patches: a Gauss-Seidel matrix would need"));
+    CHECK(contains(snapshot->methodReason, "patches: progressive refinement's time grows"));
 
-    // Coarser meshing (the slider) brings the matrix method back while none was picked.
+    // Coarser meshing (the slider) brings the small mesh's method back while none was picked.
     thread.send(command::Remesh{MeshingOptions{0.25}});
     thread.waitUntilIdle();
     snapshot = thread.snapshot();
-    CHECK(snapshot->method == SolverMethod::GaussSeidel);
-    CHECK(contains(snapshot->methodReason, "24 patches: the Gauss-Seidel matrix needs"));
+    CHECK(snapshot->method == SolverMethod::Progressive);
+    CHECK(contains(snapshot->methodReason, "24 patches: progressive refinement, "));
 }
 
 TEST_CASE("in the lab a picked method stays across re-meshing, and its refusal names the meshing slider") {
@@ -199,8 +190,8 @@ TEST_CASE("in the lab a picked method stays across re-meshing, and its refusal n
     thread.waitUntilIdle();
     snapshot = thread.snapshot();
     CHECK(snapshot->error.empty());
-    CHECK(snapshot->method == SolverMethod::Hierarchical);
-    CHECK(contains(snapshot->methodReason, "over the budget"));
+    CHECK(snapshot->method == kSolveDefaults.method);
+    CHECK(contains(snapshot->methodReason, "patches: progressive refinement, "));
 }
 
 } // TEST_SUITE
