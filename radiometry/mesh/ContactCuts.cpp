@@ -16,6 +16,7 @@ namespace {
 struct Line {
     glm::dvec3 point{0.0};  ///< a point of the contact
     glm::dvec3 across{0.0};  ///< unit, in the face's plane, perpendicular to the line
+    double snap = 0;  ///< m: corners this close to the line are on it (ContactCuts.h: kContactSnap)
 };
 
 struct SceneEdge {
@@ -113,8 +114,9 @@ bool lexicographicallyLess(const glm::dvec3& a, const glm::dvec3& b) {
 
 /// Splits a convex polygon by the line; corners within `snap` of it count as on it. Returns false
 /// (and leaves the output empty) when the line does not cross the polygon's inside.
-bool split(const std::vector<glm::dvec3>& polygon, const Line& line, double snap, std::vector<glm::dvec3>& front,
+bool split(const std::vector<glm::dvec3>& polygon, const Line& line, std::vector<glm::dvec3>& front,
            std::vector<glm::dvec3>& back, std::vector<glm::dvec3>& made) {
+    const double snap = line.snap;
     std::vector<double> side(polygon.size());
     bool anyFront = false, anyBack = false;
     for (std::size_t i = 0; i < polygon.size(); ++i) {
@@ -147,7 +149,7 @@ bool split(const std::vector<glm::dvec3>& polygon, const Line& line, double snap
 
 } // namespace
 
-ContactPolygons cutAlongContacts(const Scene& scene) {
+ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings) {
     ContactPolygons result(scene.surfaces.size());
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     std::vector<SceneEdge> edges;
@@ -195,13 +197,16 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                     highest = std::max(highest, planeDistance(face, v));
                 }
                 if (lowest < -planeTolerance || highest <= planeTolerance) return;
-                if (lengthInside(face.vertices, face.normal, edge.a, edge.b, snap) <= snap) return;
+                // A small thing's contact snaps at a share of its own size, not the scene's: a chair
+                // leg in a hall still cuts, and lines a leg's width apart stay apart.
+                const double lineSnap = std::min(snap, kContactSnapOfEdge * glm::distance(edge.a, edge.b));
+                if (lengthInside(face.vertices, face.normal, edge.a, edge.b, lineSnap) <= lineSnap) return;
                 // Ordered ends, so the same contact read from a file (floats, another winding) makes the
                 // same line.
                 const bool ordered = lexicographicallyLess(edge.a, edge.b);
                 const glm::dvec3& a = ordered ? edge.a : edge.b;
                 const glm::dvec3& b = ordered ? edge.b : edge.a;
-                lines[f].push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a)))});
+                lines[f].push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
                 any = true;
             });
         }
@@ -220,22 +225,35 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                 if (coplanar) applied[g].insert(applied[g].end(), lines[f].begin(), lines[f].end());
             }
         }
-        // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's.
-        for (auto& faceLines : applied)
-            std::sort(faceLines.begin(), faceLines.end(),
-                      [](const Line& l, const Line& r) { return lexicographicallyLess(l.point, r.point); });
+        // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's (the
+        // two edges leaving a footprint's corner share its point, so the direction breaks the tie).
+        // A contact found from two faces of the plane (a floor stored as two triangles) cuts once.
+        for (auto& faceLines : applied) {
+            std::sort(faceLines.begin(), faceLines.end(), [](const Line& l, const Line& r) {
+                return l.point != r.point ? lexicographicallyLess(l.point, r.point) : lexicographicallyLess(l.across, r.across);
+            });
+            faceLines.erase(std::unique(faceLines.begin(), faceLines.end(),
+                                        [](const Line& l, const Line& r) {
+                                            return glm::distance(l.point, r.point) <= std::min(l.snap, r.snap) &&
+                                                   glm::dot(l.across, r.across) > kSameDirection;
+                                        }),
+                            faceLines.end());
+        }
         // Each line cuts every piece of the plane it crosses (ContactCuts.h: why not only the pieces its
         // contact segment crosses).
         std::vector<glm::dvec3> made;
         std::vector<std::vector<std::vector<glm::dvec3>>> pieces(surface.faces.size());
-        for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+        std::size_t piecesSoFar = 0, linesApplied = 0;
+        bool overBudget = false;
+        for (std::uint32_t g = 0; g < surface.faces.size() && !overBudget; ++g) {
             if (applied[g].empty()) continue;
+            linesApplied += applied[g].size();
             std::vector<std::vector<glm::dvec3>> polygons{surface.faces[g].vertices}, next;
             std::vector<glm::dvec3> front, back;
             for (const Line& line : applied[g]) {
                 next.clear();
                 for (auto& polygon : polygons) {
-                    if (split(polygon, line, snap, front, back, made)) {
+                    if (split(polygon, line, front, back, made)) {
                         next.push_back(front);
                         next.push_back(back);
                     } else {
@@ -243,8 +261,25 @@ ContactPolygons cutAlongContacts(const Scene& scene) {
                     }
                 }
                 std::swap(polygons, next);
+                if (piecesSoFar + polygons.size() > kMostContactPieces) {
+                    overBudget = true;
+                    break;
+                }
             }
+            piecesSoFar += polygons.size();
             if (polygons.size() > 1) pieces[g] = std::move(polygons);
+        }
+        if (overBudget) {
+            // Whole lines across a crowded plane multiply (n lines in general position: about n^2 / 2
+            // pieces; 30 turned desks on a floor hung the load for minutes): the surface is meshed as
+            // if nothing stood on it, and the user is told.
+            if (warnings)
+                warnings->push_back(scene.name + ": surface '" + surface.name + "': the " + std::to_string(linesApplied) +
+                                    " edges standing on it would cut it into more than " +
+                                    std::to_string(kMostContactPieces) +
+                                    " pieces; it is meshed uncut, so its patches along what stands on it may lie "
+                                    "partly under it and read darker there");
+            continue;
         }
 
         // A cut ends on an edge that a face beside it keeps whole (a face of the surface out of the

@@ -2,8 +2,8 @@
 // Contact-aware meshing (issue 14): a face is cut along the lines where other faces stand on it (the
 // footprint of a block on a floor), so that no patch or element straddles a contact line. A patch
 // half under a block is dark on its covered half and, averaged, reads as its open share of the right
-// radiosity; everything that sees the floor then sees it too dark (Cornell box: 0.63% mean, 2.4%
-// worst at the bench's points against the path tracer, 0.14% / 0.34% with the floor cut).
+// radiosity; everything that sees the floor then sees it too dark (docs/ARCHITECTURE.md, "Accuracy",
+// has the Cornell box's numbers with and without the cut).
 //
 // A contact is an edge of a face not parallel to this one, lying in this face's plane (within a
 // tolerance relative to the scene's size) with a part inside the face, whose face stands on this
@@ -14,12 +14,14 @@
 // the footprint's lines, whose pieces took those ends as corners and were fanned from their centre,
 // and the thin triangles running away from the block's foot averaged its shadow with the open floor
 // (converged Gauss-Seidel at the Cornell short block's side over it 2.35% bright at 0.001 m^2 against
-// the path tracer; 0.71% with whole lines). Where a
-// cut ends on an edge of the surface out of the plane, that edge takes the cut's end as a corner,
-// and its polygon, now with a corner on a straight side, is fanned into triangles from its centre:
-// no T-junction within a surface. A floor with many things on it is crossed by all their lines. Corners within the snap distance of a line count as on it, so a cut
-// close to a corner or along an edge goes through it and leaves no sliver.
+// the path tracer; 0.71% with whole lines). Where a cut ends on an edge of the surface out of the
+// plane, that edge takes the cut's end as a corner, and its polygon, now with a corner on a straight
+// side, is fanned into triangles from its centre: no T-junction within a surface. A floor with many
+// things on it is crossed by all their lines, up to a budget of pieces. Corners within the snap
+// distance of a line count as on it, so a cut close to a corner or along an edge goes through it and
+// leaves no sliver.
 #include <cstddef>
+#include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -33,11 +35,19 @@ namespace radiant::detail {
 /// the hierarchical element tree (ElementTree) alike, so both see the same footprints.
 using ContactPolygons = std::vector<std::vector<std::vector<std::vector<glm::dvec3>>>>;
 
-ContactPolygons cutAlongContacts(const Scene& scene);
+/// A surface whose cut would take more than kMostContactPieces pieces is left uncut, with one line
+/// in `warnings` (when given) naming it.
+ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings = nullptr);
 
 /// Relative to the scene's diagonal: how far from a face's plane a contact edge may lie, and how
 /// close to a cut line a corner is taken as on it.
 inline constexpr double kContactPlaneTolerance = 1e-5;
 inline constexpr double kContactSnap = 5e-4;
+/// A contact edge's own snap is at most this share of its length (below kContactSnap x the diagonal).
+inline constexpr double kContactSnapOfEdge = 0.05;
+/// Two cut lines this parallel (cosine) through the same point are one.
+inline constexpr double kSameDirection = 1 - 1e-9;
+/// Most pieces one surface's contacts may cut it into; the T-junction pass after the cut is quadratic in them.
+inline constexpr std::size_t kMostContactPieces = 4096;
 
 } // namespace radiant::detail

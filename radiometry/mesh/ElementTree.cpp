@@ -2,11 +2,15 @@
 
 #include <array>
 #include <limits>
+#include <span>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/ContactCuts.h"
+#include "radiometry/mesh/ConvexFan.h"
+#include "radiometry/mesh/MeshPlan.h"
 
 namespace radiant {
 
@@ -50,6 +54,7 @@ bool polygonContains(const PatchPolygon& polygon, const glm::dvec3& point) {
 
 ElementTree::ElementTree(const Scene& scene) {
     const detail::ContactPolygons contacts = detail::cutAlongContacts(scene);
+    const double weld = detail::weldTolerance(scene);
     surfaceFirstFace_.push_back(0);
     faceFirstRoot_.push_back(0);
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
@@ -61,15 +66,25 @@ ElementTree::ElementTree(const Scene& scene) {
                                    "a face needs at least 3 corners, it has " + std::to_string(v.size()));
             // A face cut along contacts (ContactCuts.h) gets roots from its cut polygons, so no element
             // straddles the footprint of what stands on it.
+            // Larger polygons are split into the mesher's pieces (ConvexFan.h), so every patch lies in
+            // one root and reads it through locate().
             const auto addRoots = [&](const std::vector<glm::dvec3>& polygon) {
-                if (polygon.size() <= 4) {
-                    roots_.push_back(append(makeElementPolygon(polygon), Node{kNoElement, kNoElement, s, 0}));
+                std::vector<glm::dvec3> corners;
+                for (const glm::dvec3& c : polygon)
+                    if (corners.empty() || glm::distance(corners.back(), c) > weld) corners.push_back(c);
+                while (corners.size() > 1 && glm::distance(corners.front(), corners.back()) <= weld) corners.pop_back();
+                if (corners.size() < 3) corners = polygon;  // degenerate: makeElementPolygon says what is wrong
+                if (corners.size() <= 4) {
+                    roots_.push_back(append(makeElementPolygon(corners), Node{kNoElement, kNoElement, s, 0}));
                     return;
                 }
-                for (std::size_t i = 1; i + 1 < polygon.size(); ++i) {
-                    const std::array<glm::dvec3, 3> triangle{polygon[0], polygon[i], polygon[i + 1]};
-                    roots_.push_back(append(makeElementPolygon(triangle), Node{kNoElement, kNoElement, s, 0}));
-                }
+                detail::forEachFanPiece(corners.size(), [&](std::size_t first, std::size_t count) {
+                    std::array<glm::dvec3, 4> piece{};
+                    piece[0] = corners[0];
+                    for (std::size_t j = 1; j < count; ++j) piece[j] = corners[first + j - 1];
+                    roots_.push_back(append(makeElementPolygon(std::span<const glm::dvec3>(piece.data(), count)),
+                                            Node{kNoElement, kNoElement, s, 0}));
+                });
             };
             if (contacts[s][f].empty()) {
                 addRoots(v);

@@ -12,6 +12,7 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/ContactCuts.h"
+#include "radiometry/mesh/ConvexFan.h"
 #include "radiometry/mesh/VertexWelder.h"
 
 namespace radiant::detail {
@@ -32,8 +33,8 @@ std::uint64_t segmentsFor(double length, double step) {
     return static_cast<std::uint64_t>(std::clamp(n, 1.0, static_cast<double>(kMaxSegments)));
 }
 
-/// Welding tolerance: a billionth of the scene's size, so float-rounded copies of a corner merge
-/// and distinct corners never do.
+} // namespace
+
 double weldTolerance(const Scene& scene) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const Surface& s : scene.surfaces)
@@ -45,6 +46,8 @@ double weldTolerance(const Scene& scene) {
     const double extent = lo.x <= hi.x ? glm::length(hi - lo) : 1.0;
     return std::max(extent * 1e-9, 1e-12);
 }
+
+namespace {
 
 class EdgeClasses {
 public:
@@ -148,18 +151,13 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         while (ids.size() > 1 && ids.front() == ids.back()) ids.pop_back();
         if (ids.size() < 3) return;
 
-        // Fan into quads (0, i, i+1, i+2), then one closing triangle: convex pieces of a convex face.
-        const std::size_t n = ids.size();
-        std::size_t i = 1;
-        const auto addPiece = [&](std::uint8_t count) {
+        forEachFanPiece(ids.size(), [&](std::size_t first, std::size_t count) {
             Piece piece;
             piece.face = static_cast<std::uint32_t>(f);
-            piece.count = count;
-            for (std::size_t j = 0; j < count; ++j) piece.corners[j] = j == 0 ? ids[0] : ids[i + j - 1];
+            piece.count = static_cast<std::uint8_t>(count);
+            for (std::size_t j = 0; j < count; ++j) piece.corners[j] = j == 0 ? ids[0] : ids[first + j - 1];
             plan.pieces.push_back(piece);
-        };
-        for (; n - i >= 3; i += 2) addPiece(4);
-        if (n - i == 2) addPiece(3);
+        });
     };
     for (std::size_t f = 0; f < surface.faces.size(); ++f) {
         const Face& face = surface.faces[f];

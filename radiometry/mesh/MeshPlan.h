@@ -66,6 +66,10 @@ struct MeshPlan {
     double patchCount = 0;  ///< double: an absurd request must not overflow before it is refused
 };
 
+/// Corners closer than this are one (m): a billionth of the scene's size, so float-rounded copies of
+/// a corner merge and distinct corners never do. The element tree drops repeated corners by it too.
+double weldTolerance(const Scene& scene);
+
 /// Builds the plan; throws RadiantError for a maximum patch area that is not positive and finite.
 MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options);
 

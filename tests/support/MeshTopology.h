@@ -8,6 +8,7 @@
 #include <map>
 #include <set>
 #include <tuple>
+#include <utility>
 #include <vector>
 
 #include <glm/common.hpp>
@@ -19,12 +20,13 @@
 namespace radiant::test {
 
 /// A face through these corners (counter-clockwise about its normal), its area and normal derived.
-inline Face makeFace(std::initializer_list<glm::dvec3> corners) {
+inline Face makeFace(std::vector<glm::dvec3> corners) {
     Face face;
-    face.vertices = corners;
+    face.vertices = std::move(corners);
     face.updateGeometry();
     return face;
 }
+inline Face makeFace(std::initializer_list<glm::dvec3> corners) { return makeFace(std::vector<glm::dvec3>(corners)); }
 
 /// One grey surface made of `faces`.
 inline Scene sceneOf(std::vector<Face> faces) {

@@ -10,12 +10,14 @@
 #include <cmath>
 #include <memory>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/ContactCuts.h"
+#include "radiometry/mesh/ElementTree.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/solver/Solver.h"
 #include "tests/support/MeshTopology.h"
@@ -107,6 +109,85 @@ TEST_CASE("a floor is cut along the footprint of a box standing on it: no patch 
         CHECK(countTJunctions(mesh, 0, 0.05) == 0);
         for (const Patch& patch : mesh.patches) CHECK(patch.area <= 0.005 * (1 + 1e-5));
     }
+}
+
+TEST_CASE("every patch lies in the element-tree root that holds its centroid: both split a cut face alike") {
+    // The floor's cut pieces have up to six corners here, and an octagon stands for a glTF n-gon. A
+    // patch across two roots would read only the one holding its centroid (ElementTree::locate).
+    std::vector<glm::dvec3> octagon;
+    for (int k = 0; k < 8; ++k) {
+        const double a = 2 * std::numbers::pi * k / 8;
+        octagon.push_back({3 + std::cos(a), 3 + std::sin(a), 0});
+    }
+    for (const bool triangles : {false, true}) {
+        CAPTURE(triangles);
+        const Scene scene = grey({{"floor", 0, floorFaces(triangles), "test"}, {"box", 0, boxFaces(), "test"},
+                                  {"octagon", 0, {makeFace(octagon)}, "test"}},
+                                 0);
+        const PatchMesh mesh = meshScene(scene, {0.005});
+        const ElementTree tree(scene);
+        std::size_t fiveOrMore = 0;
+        for (const ElementIndex root : tree.roots()) fiveOrMore += tree.polygon(root).count > 4;
+        CHECK(fiveOrMore == 0);
+        std::size_t outside = 0;
+        for (const Patch& patch : mesh.patches) {
+            const ElementIndex root = tree.locate(patch.surface, patch.face, patch.centroid, 1e300);
+            REQUIRE(root != kNoElement);
+            for (std::size_t c = 0; c < patch.cornerCount; ++c)
+                if (!tree.contains(root, mesh.vertices[patch.corners[c]])) ++outside;
+        }
+        CHECK(outside == 0);
+    }
+}
+
+TEST_CASE("a 2 cm box on a 100 m floor still cuts it: a contact snaps at a share of its own length") {
+    // The scene's diagonal is ~141 m, whose snap distance (7 cm) is larger than the box.
+    const double side = 0.02, height = 0.02;
+    std::vector<Face> box;
+    const std::array<glm::dvec3, 4> f{glm::dvec3{50, 50, 0}, {50 + side, 50, 0}, {50 + side, 50 + side, 0}, {50, 50 + side, 0}};
+    const glm::dvec3 up(0, 0, height);
+    for (std::size_t i = 0; i < 4; ++i) box.push_back(makeFace({f[i], f[(i + 1) % 4], f[(i + 1) % 4] + up, f[i] + up}));
+    const Scene scene = grey({{"floor", 0, {makeFace({{0, 0, 0}, {100, 0, 0}, {100, 100, 0}, {0, 100, 0}})}, "test"},
+                              {"box", 0, box, "test"}},
+                             0);
+    const detail::ContactPolygons cut = detail::cutAlongContacts(scene);
+    REQUIRE(cut[0].size() == 1);
+    double footprint = 0;
+    for (const auto& piece : cut[0][0]) {
+        Face face;
+        face.vertices = piece;
+        face.updateGeometry();
+        glm::dvec3 centre(0.0);
+        for (const glm::dvec3& c : piece) centre += c / static_cast<double>(piece.size());
+        if (centre.x > 50 && centre.x < 50 + side && centre.y > 50 && centre.y < 50 + side) footprint += face.area;
+    }
+    CHECK(footprint == radiant::test::relativeTo(side * side, 1e-6));
+}
+
+TEST_CASE("a floor too crowded to cut is meshed uncut, and the load says so") {
+    // 60 boxes turned by different angles: 240 lines across the floor would make ~29,000 pieces.
+    std::vector<Face> boxes;
+    for (int k = 0; k < 60; ++k) {
+        const double turn = 0.37 * k, half = 0.1;
+        const glm::dvec3 centre(1 + (k % 10) * 1.5, 1 + (k / 10) * 1.5, 0);
+        const glm::dvec3 u(std::cos(turn), std::sin(turn), 0), v(-std::sin(turn), std::cos(turn), 0), up(0, 0, 0.5);
+        const std::array<glm::dvec3, 4> f{centre - half * u - half * v, centre + half * u - half * v,
+                                          centre + half * u + half * v, centre - half * u + half * v};
+        for (std::size_t i = 0; i < 4; ++i) boxes.push_back(makeFace({f[i], f[(i + 1) % 4], f[(i + 1) % 4] + up, f[i] + up}));
+    }
+    Scene scene = grey({{"floor", 0, {makeFace({{0, 0, 0}, {16, 0, 0}, {16, 10, 0}, {0, 10, 0}})}, "test"},
+                        {"boxes", 0, boxes, "test"}},
+                       0);
+    std::vector<std::string> warnings;
+    const detail::ContactPolygons cut = detail::cutAlongContacts(scene, &warnings);
+    CHECK(cut[0][0].empty());  // uncut
+    REQUIRE(warnings.size() == 1);
+    CHECK(warnings[0].find("surface 'floor': the 240 edges standing on it would cut it into more than 4096 pieces") !=
+          std::string::npos);
+    const PatchMesh mesh = meshScene(scene, {0.5});
+    double floorArea = 0;
+    for (std::size_t p = mesh.surfaceFirstPatch[0]; p < mesh.surfaceFirstPatch[1]; ++p) floorArea += mesh.patches[p].area;
+    CHECK(floorArea == radiant::test::relativeTo(160.0, 1e-9));
 }
 
 TEST_CASE("a box's own top and a twin coplanar face cut nothing: a floor with nothing on it is one grid") {
