@@ -287,6 +287,12 @@ private:
                 }
                 // The exporter's own triangles keep their diagonals where nothing was removed.
                 if (!found || !(fresh_[t] || fresh_[u]) || !coplanar(normals_[t], normals_[u]) || w == c || hasEdge(c, w)) continue;
+                // A third face on the edge (a fin, a CAD file's inner wall) would be left hanging by the flip.
+                const auto onEdge = std::count_if(incident_[a].begin(), incident_[a].end(), [&](std::uint32_t s) {
+                    const Triangle& r = triangles_[s];
+                    return alive_[s] && (r[0] == b || r[1] == b || r[2] == b);
+                });
+                if (onEdge != 2) continue;
                 const Triangle first{a, w, c}, second{w, b, c};
                 const glm::dvec3 n1 = areaVector(points_, first), n2 = areaVector(points_, second);
                 const double l1 = glm::length(n1), l2 = glm::length(n2);

@@ -22,7 +22,7 @@ patch area, not the triangles) into tests/data/grouping/:
   1 W/m^2 and reflects 0.5: the furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
 
 Materials are single-sided with exact SI values in extras.radiant. Read by
-tests/unit/test_meshing_tessellated.cpp.
+tests/unit/test_meshing_tessellated.cpp and tests/unit/test_triangle_grouping.cpp.
     python3 tests/data/make_grouping_scenes.py
 """
 import base64

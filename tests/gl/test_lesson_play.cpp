@@ -248,7 +248,7 @@ TEST_CASE("a session saved while comparing two methods reopens comparing them, i
         lab.send(app::command::Run{});
         settle(lab);
         for (int frame = 0; frame < 200000 && !(lab.secondSnapshot() && lab.secondSnapshot()->mesh); ++frame) lab.frame();
-        REQUIRE(lab.secondSnapshot()->mesh);
+        REQUIRE((lab.secondSnapshot() && lab.secondSnapshot()->mesh));
         patchesB = lab.secondSnapshot()->mesh->size();
         lab.saveSession(file.string());
     }
@@ -264,6 +264,7 @@ TEST_CASE("a session saved while comparing two methods reopens comparing them, i
                                             reopened.secondSnapshot()->mesh->size() == patchesB);
          ++frame)
         reopened.frame();
+    REQUIRE((reopened.secondSnapshot() && reopened.secondSnapshot()->mesh));
     CHECK(reopened.secondSnapshot()->method == SolverMethod::Progressive);
     CHECK(reopened.secondSnapshot()->mesh->size() == patchesB);  // B on 4x A's patch area, as saved
 
