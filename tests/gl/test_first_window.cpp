@@ -136,13 +136,14 @@ TEST_SUITE("gl window") {
 TEST_CASE("the first window draws the Cornell box as the Cornell camera sees it") {
     requireDisplay();
     LabOptions options;
-    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
+    options.maxPatchArea = 0.01;  // coarse: quick to mesh and solve
     options.width = 960;
     options.height = 600;
     options.showPanels = false;
     Lab lab(options);
     // The layout check reads material colours: show reflectance, not the (still dark) solution.
     lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    lab.display().highlightShooter = false;  // the default method shoots: its shooter's outline is orange
     waitForMesh(lab);
     CHECK(lab.glInfo().major * 10 + lab.glInfo().minor >= 33);
     ImageRgb8 image;
@@ -158,12 +159,13 @@ TEST_CASE("the first window draws the Cornell box as the Cornell camera sees it"
 TEST_CASE("with the panels docked on the left the box keeps its layout in the remaining view") {
     requireDisplay();
     LabOptions options;
-    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
+    options.maxPatchArea = 0.01;  // coarse: quick to mesh and solve
     options.width = 1200;
     options.height = 700;
     Lab lab(options);
     // The layout check reads material colours: show reflectance, not the (still dark) solution.
     lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    lab.display().highlightShooter = false;  // the default method shoots: its shooter's outline is orange
     waitForMesh(lab);
     ImageRgb8 image;
     for (int i = 0; i < 3; ++i) image = lab.frameAndCapture();
@@ -177,13 +179,14 @@ TEST_CASE("with the panels docked on the left the box keeps its layout in the re
 TEST_CASE("an offscreen capture matches the Cornell layout at a size unlike the window's") {
     requireDisplay();
     LabOptions options;
-    options.maxPatchArea = 0.01;  // coarse: the default mesh's Gauss-Seidel matrix takes seconds
+    options.maxPatchArea = 0.01;  // coarse: quick to mesh and solve
     options.width = 640;
     options.height = 400;
     options.showPanels = false;
     Lab lab(options);
     // The layout check reads material colours: show reflectance, not the (still dark) solution.
     lab.display().colourMode = radiant::render::ColourMode::Reflectance;
+    lab.display().highlightShooter = false;  // the default method shoots: its shooter's outline is orange
     waitForMesh(lab);
     lab.frame();
     const ImageRgb8 image = lab.renderOffscreen(500, 360);
