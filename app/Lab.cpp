@@ -29,6 +29,7 @@
 #include "app/panels/ProbePanel.h"
 #include "app/panels/ScenePanel.h"
 #include "app/panels/SolverPanel.h"
+#include "app/solver/ConvergenceQuantity.h"
 #include "app/solver/LiveSolve.h"
 #include "app/solver/MethodLabel.h"
 #include "app/solver/SolverThread.h"
@@ -234,8 +235,10 @@ struct Lab::State {
         else if (s.stats.iteration == 0)
             std::snprintf(text, sizeof text, "%s - %s", methodLabel(s.method), s.running ? "starting" : "ready");
         else
-            std::snprintf(text, sizeof text, "%s - iteration %zu - residual %.2e%s", methodLabel(s.method),
-                          s.stats.iteration, s.stats.residual, s.running ? " - running" : "");
+            // Each method's own measure by its name (ConvergenceQuantity.h), as the plot's axis says.
+            std::snprintf(text, sizeof text, "%s - iteration %zu - %s %.2e%s", methodLabel(s.method),
+                          s.stats.iteration, std::string(convergenceQuantity(s.method).name).c_str(),
+                          s.stats.residual, s.running ? " - running" : "");
         line.solve = text;
         line.message = message;
         return line;
