@@ -420,8 +420,22 @@ TEST_CASE("a worker stuck mid-build is reported by the watchdog with every threa
     StuckBuild stuck(3);
     const auto storm = std::make_shared<Storm>(1, 300, stuck.factory());
     WatchedStorm watched = launchStorm(storm);
-    while (!stuck.entered() && watched.result.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready)
-        continue;
+    // Until then the real limit watches: a storm that stops making progress before the stuck build
+    // is a failure of its own, reported here rather than by ctest's timeout.
+    constexpr auto kRealStallLimit = std::chrono::seconds(60);
+    std::uint64_t mark = storm->progressMark();
+    auto lastProgress = std::chrono::steady_clock::now();
+    while (!stuck.entered() && watched.result.wait_for(std::chrono::milliseconds(10)) != std::future_status::ready) {
+        const auto now = std::chrono::steady_clock::now();
+        if (const std::uint64_t newMark = storm->progressMark(); newMark != mark) {
+            mark = newMark;
+            lastProgress = now;
+        }
+        if (now - lastProgress >= kRealStallLimit) {
+            stuck.release();
+            FAIL("no progress for 60 s before the stuck build: " << storm->describe());
+        }
+    }
     REQUIRE_MESSAGE(stuck.entered(), "the storm ended without reaching the stuck build");
     watch(watched, kShortStallLimit);
     stuck.release();
