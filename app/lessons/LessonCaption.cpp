@@ -17,7 +17,9 @@ void drawLessonCaption(const LessonPlayer& lessons, const render::Viewport& view
     ImGui::SetNextWindowPos({static_cast<float>(view.x) + margin, static_cast<float>(view.y + view.height) - 0.5f * margin},
                             ImGuiCond_Always, {0.0f, 1.0f});
     ImGui::SetNextWindowSizeConstraints({0, 0}, {width, static_cast<float>(view.height) * 0.6f});
-    ImGui::SetNextWindowBgAlpha(0.72f);
+    // Nearly opaque: at 0.72 the comparison's split line (drawn under every window) ran through the
+    // text; the picture behind stays faintly visible.
+    ImGui::SetNextWindowBgAlpha(0.9f);
     ImGui::Begin("##lesson caption", nullptr,
                  ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoInputs |
                      ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing | ImGuiWindowFlags_NoNav);
