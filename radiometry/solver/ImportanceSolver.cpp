@@ -50,9 +50,11 @@ IterationStats ImportanceSolver::step() {
     // Cornell box's 47,000), so a solve to the default tolerance often stopped before a step refined
     // nothing, i.e. before the rows were built, and which way it went depended on the seed: the
     // patches then showed their leaves' constants and the links' four-ray shares. Once a step adds
-    // fewer than kSettleFraction of the links, refinement stops and the next step builds the rows.
+    // fewer than kSettleFraction of the links while the sweep change is under kSettleChange (not in
+    // the first steps, where few links may be made against the emitters alone in a scene of many
+    // roots), refinement stops and the next step builds the rows.
     const IterationStats& last = lastStats();
-    if (last.linksRefined > 0 &&
+    if (last.linksRefined > 0 && last.residual < kSettleChange &&
         static_cast<double>(last.linksRefined) < kSettleFraction * static_cast<double>(last.links) &&
         elements().leafCount() <= kMaxLeavesWithRows)
         settleRefinement();
