@@ -96,12 +96,21 @@ protected:
     virtual void afterSolutionMapped() {}
     /// Lets refinement resume after the leaf rows stopped it (the importance changed with the view).
     void resumeRefinement() { linksSettled_ = false; }
+    /// Stops refinement as a step that refines nothing does: the next step builds the rows, and the
+    /// links stay until a material, reset() or the view changes.
+    void settleRefinement() { linksSettled_ = true; }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
 
     /// Per-element importance (1/m^2), empty for plain hierarchical radiosity; when present the
     /// oracle weighs each link's error by it (importance-driven refinement, Smits et al. 1992).
     std::vector<double> importance_;
+    /// Patch rows (HierarchicalGather.cpp, buildPatchRows): false, a term takes its link's share
+    /// unless either of the link's ray sets was split or its receiver is over 15x the patch; true
+    /// (importance), the choice does not depend on the share's own rays (only on the oracle's set and
+    /// the receiver's size, with an emitter's terms casting rays under any receiver larger than the
+    /// patch), and links whose rays all met a blocker are gathered too.
+    bool unbiasedPatchTerms_ = false;
 
     [[nodiscard]] unsigned threads() const { return threads_; }
     /// The scene's ray caster: the shared one given (SolverOptions::rays), else the one built for
