@@ -14,6 +14,7 @@
 #include <string>
 
 #include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
 
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchGroups.h"
@@ -24,6 +25,7 @@
 #include "radiometry/solver/SolverFactories.h"
 #include "radiometry/solver/Solver.h"
 #include "tests/support/Relative.h"
+#include "tests/support/RunRadiant.h"
 
 using namespace radiant;
 using radiant::test::relativeTo;
@@ -219,4 +221,23 @@ TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over t
     }
     MESSAGE("largest relative difference of a group's irradiance: " << largest);
     CHECK(poweredGrouped == relativeTo(poweredUngrouped, 0.002));
+}
+
+TEST_CASE("radiant solve --group-patches reports groups as the unknowns and refuses a method without a matrix") {
+    const std::string file = "'" + std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf'";
+    const test::CommandRun run = test::runRadiant("solve " + file + " --group-patches --max-patch-area 1 --json -");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    CHECK(report["method"] == "gauss-seidel");
+    CHECK(report["unknowns"].get<std::size_t>() < report["patches"].get<std::size_t>());
+    const nlohmann::json& sphere = report["surfaces"].back();
+    REQUIRE(sphere["name"] == "sphere");
+    CHECK(sphere["patches"] == 512);
+    CHECK(sphere["unknowns"].get<std::size_t>() <= 8);  // 3.1 m^2 at 1 m^2, the spread needs 4
+
+    const test::CommandRun refused =
+        test::runRadiant("solve " + file + " --group-patches --method hierarchical --max-patch-area 1");
+    CHECK(refused.status == 2);
+    CHECK(refused.err.find("jacobi or gauss-seidel only, not hierarchical") != std::string::npos);
 }
