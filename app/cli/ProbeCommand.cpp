@@ -21,8 +21,10 @@
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "radiometry/units/Photometry.h"
@@ -47,6 +49,7 @@ struct ProbeCommandOptions {
     ViewArguments view{"", "", 0, "--look-at"};  // --target names the measured surface
     std::string json = "-";
     bool photometric = false;
+    bool groupPatches = false;
 };
 
 /// The named surface, else the first emitting one; none for a scene lit only by punctual lights.
@@ -83,9 +86,17 @@ int runProbe(const ProbeCommandOptions& options) {
     const std::optional<std::size_t> target = chooseTarget(scene, options.target);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const MethodChoice choice = methodForCommand(options.method, scene, meshing);
+    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
+    const MethodChoice choice =
+        options.groupPatches
+            ? MethodChoice{options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method),
+                           options.method.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
+            : methodForCommand(options.method, scene, meshing);
     const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
+    std::shared_ptr<const PatchGroups> groups;
+    if (options.groupPatches)
+        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
     // One BVH for the scene: the probe's visibility and the solver's share it.
     const auto rays = std::make_shared<const RayCaster>(scene);
     const Probe probe(scene, mesh, rays.get());
@@ -116,7 +127,8 @@ int runProbe(const ProbeCommandOptions& options) {
         solverOptions.rays = rays;
         solverOptions.linkEpsilon = options.linkTolerance;
         solverOptions.view = viewFromArguments(options.view, scene);
-        std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh, solverOptions);
+        std::unique_ptr<Solver> solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions)
+                                                : makeSolver(method, scene, mesh, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
             ++iterations;
@@ -184,6 +196,9 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
+    sub->add_flag("--group-patches", options->groupPatches,
+                  "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
+                  "(as solve --group-patches); jacobi or gauss-seidel");
     sub->add_flag("--photometric", options->photometric,
                   "Also give illuminance_lx and luminance_cd_m2 (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B, Radiance's convention)");
     return {sub, [options] { return runProbe(*options); }};

@@ -15,8 +15,10 @@
 #include "app/cli/ViewArguments.h"
 #include "app/window/OffscreenContext.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "render/OffscreenRender.h"
@@ -44,6 +46,7 @@ struct RenderOptions {
     bool photometric = false;
     bool flat = false;
     bool wireframe = false;
+    bool groupPatches = false;
     float exposureStops = 0.0f;
     std::string camera;  ///< a glTF camera's name or index; empty: the home camera
 };
@@ -103,8 +106,14 @@ int runRender(const RenderOptions& options) {
     const Scene& scene = loaded.scene;
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const SolverMethod method = methodForCommand(options.method, scene, meshing).method;
+    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
+    const SolverMethod method =
+        options.groupPatches ? (options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method))
+                             : methodForCommand(options.method, scene, meshing).method;
     const PatchMesh mesh = meshScene(scene, meshing);
+    std::shared_ptr<const PatchGroups> groups;
+    if (options.groupPatches)
+        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
     // One view for the picture and for importance's refinement: what is drawn is what was refined.
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
     const std::optional<View> view = viewFromArguments(options.view, scene, aspect);
@@ -113,7 +122,8 @@ int runRender(const RenderOptions& options) {
     solverOptions.view = view;
     std::unique_ptr<Solver> solver;
     try {
-        solver = makeSolver(method, scene, mesh, solverOptions);
+        solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions)
+                        : makeSolver(method, scene, mesh, solverOptions);
     } catch (const BudgetError& e) {
         if (!e.where().file.empty()) throw;
         throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
@@ -177,6 +187,9 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");
     sub->add_flag("--photometric", options->photometric,
                   "false colour maps the illuminance each patch receives in lx (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B)");
+    sub->add_flag("--group-patches", options->groupPatches,
+                  "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
+                  "(as solve --group-patches); each patch drawn with its group's radiosity");
     sub->add_flag("--flat", options->flat, "each patch its own radiosity (no interpolation)");
     sub->add_flag("--wireframe", options->wireframe, "draw the patch edges");
     sub->add_option("--exposure", options->exposureStops, "exposure in stops relative to the automatic key")

@@ -16,7 +16,9 @@
 #include "app/cli/CommandLine.h"
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "radiometry/sources/DiffuseEmitter.h"
@@ -37,6 +39,7 @@ struct SolveOptions {
     std::string json;
     std::string csv;
     bool photometric = false;
+    bool groupPatches = false;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -88,9 +91,17 @@ int runSolve(const SolveOptions& options) {
     const Scene scene = loadSceneArgument(options.scene);
     MeshingOptions meshing;
     meshing.maxPatchArea = options.maxPatchArea;
-    const MethodChoice choice = methodForCommand(options.method, scene, meshing);
+    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
+    const MethodChoice choice =
+        options.groupPatches
+            ? MethodChoice{options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method),
+                           options.method.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
+            : methodForCommand(options.method, scene, meshing);
     const SolverMethod method = choice.method;
     const PatchMesh mesh = meshScene(scene, meshing);
+    std::shared_ptr<const PatchGroups> groups;
+    if (options.groupPatches)
+        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
     const double meshSeconds = secondsSince(meshStart);
 
     const auto formFactorStart = std::chrono::steady_clock::now();
@@ -102,7 +113,8 @@ int runSolve(const SolveOptions& options) {
         solverOptions.linkEpsilon = options.linkTolerance;
         solverOptions.view = viewFromArguments(options.view, scene);
         try {
-            solver = makeSolver(method, scene, mesh, solverOptions, &progress);
+            solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions, &progress)
+                            : makeSolver(method, scene, mesh, solverOptions, &progress);
         } catch (const BudgetError& e) {
             if (!e.where().file.empty()) throw;
             throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
@@ -130,8 +142,11 @@ int runSolve(const SolveOptions& options) {
             power += mesh.patches[i].area * B[i];
         }
         const Rgb radiosity = area > 0 ? power / area : Rgb(0.0);
+        const std::size_t patches = mesh.surfaceFirstPatch[s + 1] - mesh.surfaceFirstPatch[s];
         nlohmann::ordered_json surface = {{"name", scene.surfaces[s].name},
                                           {"area_m2", area},
+                                          {"patches", patches},
+                                          {"unknowns", groups ? groups->surfaceFirstGroup[s + 1] - groups->surfaceFirstGroup[s] : patches},
                                           {"reflectance", rgbJson(material.reflectance)},
                                           {"exitance_W_m2", rgbJson(material.exitance.value())},
                                           {"radiosity_W_m2", rgbJson(radiosity)},
@@ -148,6 +163,7 @@ int runSolve(const SolveOptions& options) {
         {"method", std::string(methodName(method))},
         {"method_reason", choice.reason.empty() ? nlohmann::ordered_json("given by --method") : nlohmann::ordered_json(choice.reason)},
         {"patches", mesh.size()},
+        {"unknowns", groups ? groups->size() : mesh.size()},
         {"iterations", stats.iteration},
         {"residual", stats.residual},
         {"seconds", {{"mesh", meshSeconds}, {"form_factors", formFactorSeconds}, {"solve", solveSeconds}}},
@@ -168,8 +184,9 @@ int runSolve(const SolveOptions& options) {
         writeText(options.csv, csv, "--csv");
     }
     if (options.json != "-" && options.csv != "-") {
-        std::printf("%s: %s, %zu patches, %zu iterations, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f\n",
-                    scene.name.c_str(), std::string(methodName(method)).c_str(), mesh.size(), stats.iteration,
+        const std::string grouped = groups ? " in " + std::to_string(groups->size()) + " groups" : "";
+        std::printf("%s: %s, %zu patches%s, %zu iterations, residual %.3g; seconds: mesh %.3f, form factors %.3f, solve %.3f\n",
+                    scene.name.c_str(), std::string(methodName(method)).c_str(), mesh.size(), grouped.c_str(), stats.iteration,
                     stats.residual, meshSeconds, formFactorSeconds, solveSeconds);
         for (const auto& surface : surfaces) {
             const auto& b = surface["radiosity_W_m2"];
@@ -199,6 +216,9 @@ Subcommand addSolveCommand(CLI::App& root) {
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
+    sub->add_flag("--group-patches", options->groupPatches,
+                  "Group adjacent patches of a smooth surface into unknowns of about --max-patch-area (curved, finely "
+                  "tessellated surfaces); jacobi or gauss-seidel. The form factors still visit every pair of patches");
     sub->add_flag("--photometric", options->photometric,
                   "Also give each surface's luminance (cd/m^2), luminous exitance (lm/m^2) and flux (lm): 179 lm/W, "
                   "Y = 0.265 R + 0.670 G + 0.065 B (Radiance's convention)");

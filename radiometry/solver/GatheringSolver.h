@@ -53,6 +53,11 @@ std::unique_ptr<Solver> makeJacobiSolver(const Scene& scene, const PatchMesh& me
 std::unique_ptr<Solver> makeGaussSeidelSolver(const Scene& scene, const PatchMesh& mesh,
                                               std::shared_ptr<const FormFactorMatrix> matrix);
 
+/// With explicit per-unknown materials, matching the matrix's rows (the grouped system of
+/// GroupedSolver.h, whose unknowns are groups of patches).
+std::unique_ptr<Solver> makeJacobiSolver(PatchMaterials materials, std::shared_ptr<const FormFactorMatrix> matrix);
+std::unique_ptr<Solver> makeGaussSeidelSolver(PatchMaterials materials, std::shared_ptr<const FormFactorMatrix> matrix);
+
 /// The matrix makeJacobiSolver/makeGaussSeidelSolver compute: builds a RayCaster for the scene and
 /// uses options.formFactors and options.matrixThreshold.
 std::shared_ptr<const FormFactorMatrix> computeFormFactorMatrix(const Scene& scene, const PatchMesh& mesh,

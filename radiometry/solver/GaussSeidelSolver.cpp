@@ -54,6 +54,10 @@ private:
 
 } // namespace
 
+std::unique_ptr<Solver> makeGaussSeidelSolver(PatchMaterials materials, std::shared_ptr<const FormFactorMatrix> matrix) {
+    return std::make_unique<GaussSeidelSolver>(std::move(materials), std::move(matrix));
+}
+
 std::unique_ptr<Solver> makeGaussSeidelSolver(const Scene& scene, const PatchMesh& mesh,
                                               std::shared_ptr<const FormFactorMatrix> matrix) {
     return std::make_unique<GaussSeidelSolver>(PatchMaterials::from(scene, mesh), std::move(matrix));

@@ -38,6 +38,10 @@ private:
 
 } // namespace
 
+std::unique_ptr<Solver> makeJacobiSolver(PatchMaterials materials, std::shared_ptr<const FormFactorMatrix> matrix) {
+    return std::make_unique<JacobiSolver>(std::move(materials), std::move(matrix));
+}
+
 std::unique_ptr<Solver> makeJacobiSolver(const Scene& scene, const PatchMesh& mesh,
                                          std::shared_ptr<const FormFactorMatrix> matrix) {
     return std::make_unique<JacobiSolver>(PatchMaterials::from(scene, mesh), std::move(matrix));

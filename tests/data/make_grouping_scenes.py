@@ -17,6 +17,8 @@ patch area, not the triangles) into tests/data/grouping/:
   1 W/m^2 and reflecting 0.5: a convex furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
 - cylinder_room.gltf: a cylinder (radius 0.4 m, 1 m tall, 48 segments, its side in 4 rows) whose caps
   are fans of 4 rings, 336 triangles each, as one primitive, 0.1 m above the floor of the same room.
+- sphere_room.gltf: a UV sphere (radius 0.5 m, 32 segments x 16 rings, 960 triangles, reflectance
+  0.5) outward, its centre 1 m above the floor of the rounded cube's room: a lit curved object.
 - furnace_sphere.gltf: the inside of a closed UV sphere (radius 1 m, 32 segments x 16 rings,
   triangles facing inward, tiny ones at the poles and large ones at the equator) that emits
   1 W/m^2 and reflects 0.5: the furnace, B = E / (1 - rho) = 2 W/m^2 on every patch.
@@ -260,6 +262,11 @@ def main():
     positions, triangles = cylinder(0.4, 1.0, 48, 4, 4, 0.1)
     write("cylinder_room.gltf", "cylinder room", room + [("cylinder", 2, positions, triangles)],
           [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey cylinder", 0.5)])
+
+    positions, triangles = uv_sphere(0.5, 32, 16, inward=False)
+    positions = [(x, y + 1.0, z) for x, y, z in positions]
+    write("sphere_room.gltf", "sphere room", room + [("sphere", 2, positions, triangles)],
+          [material("grey walls", 0.5), material("lamp", 0.0, 50.0), material("grey sphere", 0.5)])
 
     positions, triangles = uv_sphere(1.0, 32, 16, inward=True)
     write("furnace_sphere.gltf", "furnace sphere", [("sphere inside", 0, positions, triangles)],
