@@ -8,6 +8,7 @@
 // follows the kernel's variation across a leaf, most of all near contact and under the light.
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -49,6 +50,10 @@ constexpr int kTermVisibilityRays = 8;
 /// A link whose receiver is more than this many times the patch's area gives the patch no share of
 /// its own: the patch's terms cast rays.
 constexpr double kLargeReceiver = 15;
+/// See gatherTermsAt.
+constexpr double kBrightHidden = 0.01;
+
+double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
 
 } // namespace
 
@@ -56,10 +61,20 @@ template <class Visibility>
 void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility,
                                        bool everyLink, bool exact, std::vector<GatherTerm>& out) const {
     const glm::dvec3& n = tree_.polygon(leaf).normal;
+    const auto& radiosity = tree_.radiosity();
+    // A link all of whose rays were blocked may still light part of x's leaf (4 rays all miss a
+    // visible fraction v with chance (1 - v)^4): where its source could bring x more than
+    // kBrightHidden of the leaf's irradiance, x's gather keeps it, and its visibility says.
+    const double leafIrradiance = leaf < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[leaf]) : 0.0;
+    const auto brightHidden = [&](const Link& link) {
+        const PatchPolygon& q = tree_.polygon(link.source);
+        const glm::dvec3 d = q.centroid - x;
+        return maxBand(radiosity[link.source]) * q.area > kBrightHidden * leafIrradiance * std::numbers::pi * glm::dot(d, d);
+    };
     for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
         for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
             const std::uint32_t i = receiverLinks_[k];
-            if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible()) continue;
+            if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible() && !brightHidden(links_[i])) continue;
             if (kernelAt(x, n, tree_.polygon(links_[i].source), exact) <= 0) continue;
             expandSource(i, links_[i].source, x, n, weight, visibility, exact, out);
         }
@@ -88,6 +103,7 @@ void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, c
 
 void HierarchicalSolver::buildPatchRows() {
     std::vector<std::vector<GatherTerm>> rows(patches_.size());
+    const auto& radiosity = tree_.radiosity();
     parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
         // A link's visible share, the same for every point of its receiver, except where its rays
         // found it partially visible or its receiver is much larger than the patch: there visibility
@@ -99,11 +115,20 @@ void HierarchicalSolver::buildPatchRows() {
         std::unordered_map<std::uint64_t, double> termVisibility;
         const PatchPolygon* patchPolygon = nullptr;
         std::uint64_t patchSeed = 0;
+        double patchIrradiance = 0;
+        // A source that brings the patch much of its light (the lamp's pieces) is seen through the
+        // patch's own rays whatever its link's verdict: four rays that all got through, or were all
+        // blocked, call a penumbra lit or dark for the whole of a receiver larger than the patch.
+        const auto bright = [&](ElementIndex term, const PatchPolygon& q) {
+            const glm::dvec3 d = q.centroid - patchPolygon->centroid;
+            return maxBand(radiosity[term]) * q.area > kBrightHidden * patchIrradiance * std::numbers::pi * glm::dot(d, d);
+        };
         const auto visibility = [&](std::uint32_t link, ElementIndex term, const PatchPolygon& q) {
-            const bool own = !partlyVisible(links_[link], linkShare_[link]) &&
-                             tree_.area(links_[link].receiver) <= kLargeReceiver * patchPolygon->area;
+            const bool own = !partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 &&
+                             tree_.area(links_[link].receiver) <= kLargeReceiver * patchPolygon->area && !bright(term, q);
             if (caster_ == nullptr || own) return static_cast<double>(linkShare_[link]);
-            const std::uint64_t key = (static_cast<std::uint64_t>(link) << 32) | term;
+            // Rays from the patch to the term: the same whichever link of the patch's points asked.
+            const std::uint64_t key = term;
             const auto [entry, inserted] = termVisibility.try_emplace(key, 0.0);
             if (inserted)
                 entry->second = hierarchical::elementVisibility(*patchPolygon, q, *caster_, kTermVisibilityRays, hierarchical::mix(patchSeed ^ key));
@@ -118,6 +143,7 @@ void HierarchicalSolver::buildPatchRows() {
             // The patch's mean irradiance by a Gauss rule: 3 x 3 where the leaves are finer than the
             // patch (their links say the irradiance varies within it), 2 x 2 elsewhere.
             const ElementIndex atCentroid = tree_.locate(patch.surface, patch.face, patch.centroid);
+            patchIrradiance = atCentroid < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[atCentroid]) : 0.0;
             const int order = atCentroid != kNoElement && 4 * tree_.area(atCentroid) < patch.area ? 3 : 2;
             const auto gatherAt = [&](const glm::dvec3& x, double weight) {
                 const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);

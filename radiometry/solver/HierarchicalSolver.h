@@ -21,6 +21,7 @@
 // at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -86,6 +87,12 @@ public:
     static constexpr int kLinkVisibilityRays = 4;
     /// How much a link that every ray found blocked counts in the oracle, relative to a visible one.
     static constexpr double kHiddenErrorWeight = 0.25;
+    /// Rays that confirm a link every oracle ray found blocked, where the link would refine were it
+    /// partially visible (makeLink).
+    static constexpr int kHiddenCheckRays = 16;
+    /// Refinement stops, and the gather rows are built, once a step changes B by less than this
+    /// (its residual) even if the oracle still asks for a few links.
+    static constexpr double kSettleResidual = 1e-3;
 
 protected:
     /// Called after `parent` was split (serially, between parallel phases).
@@ -183,6 +190,8 @@ private:
     ElementTree tree_;
     std::shared_ptr<const RayCaster> caster_;  ///< sceneRays_ when links test visibility, else null
     int visibilityRays_ = 0;
+    /// The oracle's threshold when the links being made were asked for (makeLink's hidden check).
+    double hiddenCheckThreshold_ = std::numeric_limits<double>::infinity();
     std::vector<Link> links_;
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
     /// Per link, its form factor over each of the receiver's four children-to-be (their mean is the
