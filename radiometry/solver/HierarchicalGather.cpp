@@ -139,8 +139,11 @@ void HierarchicalSolver::buildPatchRows() {
         // patch's own rays whatever its link's verdict: four rays that all got through, or were all
         // blocked, call a penumbra lit or dark for the whole of a receiver larger than the patch.
         const auto bright = [&](ElementIndex term, const PatchPolygon& q) {
+            // The point kernel between the centroids stands in for the term's form factor.
             const glm::dvec3 d = q.centroid - patchPolygon->centroid;
-            return maxBand(radiosity[term]) * q.area > kBrightHidden * patchIrradiance * std::numbers::pi * glm::dot(d, d);
+            const double r2 = glm::dot(d, d);
+            const double cosines = std::max(0.0, glm::dot(patchPolygon->normal, d)) * std::max(0.0, -glm::dot(q.normal, d));
+            return maxBand(radiosity[term]) * q.area * cosines > kBrightHidden * patchIrradiance * std::numbers::pi * r2 * r2;
         };
         const auto visibility = [&](std::uint32_t link, ElementIndex term, const PatchPolygon& q) {
             const bool own = !partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 &&
