@@ -377,8 +377,12 @@ IterationStats HierarchicalSolver::step() {
     // links at every step while B grows, and a solve that reached its tolerance first never built the
     // rows, so its answer was the leaves' constants (the Cornell box at seeds 2-4: 0.9-1.2% mean,
     // 5-12% worst at the points, against 0.2% / 0.6% where it happened to settle).
-    const bool quiet = stats_.iteration > 0 && stats_.residual < kSettleResidual;
+    // Only a residual measured after refining with the current materials counts (a material change
+    // leaves the last one stale); importance-driven refinement keeps refining until no links are made,
+    // for its importance, not B, moves after the view changes.
+    const bool quiet = importance_.empty() && refinedSinceChange_ && stats_.residual < kSettleResidual;
     stats.linksRefined = linksSettled_ || quiet ? 0 : refine();
+    if (!linksSettled_ && !quiet) refinedSinceChange_ = true;
     // The rows cost a form factor per leaf and per link of its chain: they are built once refinement
     // has settled (a step that made no links), and until then push-pull pushes each link's shape. Once
     // built, the links stay until a material or the view changes: the rows move B by up to 1% of the
@@ -415,10 +419,12 @@ void HierarchicalSolver::setMaterial(std::size_t surface, const Rgb& reflectance
     surfaceReflectance_[surface] = reflectance;
     surfaceExitance_[surface] = exitance.value();
     linksSettled_ = false;
+    refinedSinceChange_ = false;
 }
 
 void HierarchicalSolver::reset() {
     linksSettled_ = false;
+    refinedSinceChange_ = false;
     setLeavesToEmission();
     stats_ = {};
     mapSolution(false);

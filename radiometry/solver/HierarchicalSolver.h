@@ -8,7 +8,9 @@
 // minElementArea. dF is the form factor's uncertainty: the spread of the exact point-to-polygon
 // kernel over the receiver (the error of giving the whole receiver one value; near contact its
 // corners count too), or the whole form factor when a few rays find the link partially visible, so
-// shadow boundaries refine further than fully visible or fully hidden links. Where the source is small
+// shadow boundaries refine further than fully visible or fully hidden links (a link whose rays were
+// all blocked draws more where it would refine were it partial). Refinement stops when a step makes
+// no links or changes B by under kSettleResidual; the gather rows are then built. Where the source is small
 // against its distance the kernel is a 2 x 2 Gauss rule over it (HierarchicalFormFactor.h). Every
 // link casts its own visibility rays (an unbiased estimate). To scale by element count, leaves
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
@@ -90,8 +92,8 @@ public:
     /// Rays that confirm a link every oracle ray found blocked, where the link would refine were it
     /// partially visible (makeLink).
     static constexpr int kHiddenCheckRays = 16;
-    /// Refinement stops, and the gather rows are built, once a step changes B by less than this
-    /// (its residual) even if the oracle still asks for a few links.
+    /// Refinement stops, and the gather rows are built, once a step that refined changes B by less
+    /// than this (its residual) even if the oracle still asks for a few links (not for importance).
     static constexpr double kSettleResidual = 1e-3;
 
 protected:
@@ -102,7 +104,10 @@ protected:
     /// Called after the per-patch solution was refreshed.
     virtual void afterSolutionMapped() {}
     /// Lets refinement resume after the leaf rows stopped it (the importance changed with the view).
-    void resumeRefinement() { linksSettled_ = false; }
+    void resumeRefinement() {
+        linksSettled_ = false;
+        refinedSinceChange_ = false;
+    }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
 
@@ -224,6 +229,7 @@ private:
     std::vector<Rgb> leafIrradiance_;
     bool leafRowsCurrent_ = false;
     bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
+    bool refinedSinceChange_ = false;  ///< a step refined since the materials, the view or reset() changed
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
