@@ -378,9 +378,9 @@ IterationStats HierarchicalSolver::step() {
     // rows, so its answer was the leaves' constants (the Cornell box at seeds 2-4: 0.9-1.2% mean,
     // 5-12% worst at the points, against 0.2% / 0.6% where it happened to settle).
     // Only a residual measured after refining with the current materials counts (a material change
-    // leaves the last one stale); importance-driven refinement keeps refining until no links are made,
-    // for its importance, not B, moves after the view changes.
-    const bool quiet = importance_.empty() && refinedSinceChange_ && stats_.residual < kSettleResidual;
+    // leaves the last one stale). After the importance view changes, refinement runs until no links
+    // are made: the importance moves then, not B.
+    const bool quiet = settleOnResidual_ && refinedSinceChange_ && stats_.residual < kSettleResidual;
     stats.linksRefined = linksSettled_ || quiet ? 0 : refine();
     if (!linksSettled_ && !quiet) refinedSinceChange_ = true;
     // The rows cost a form factor per leaf and per link of its chain: they are built once refinement

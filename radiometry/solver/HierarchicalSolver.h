@@ -93,7 +93,8 @@ public:
     /// partially visible (makeLink).
     static constexpr int kHiddenCheckRays = 16;
     /// Refinement stops, and the gather rows are built, once a step that refined changes B by less
-    /// than this (its residual) even if the oracle still asks for a few links (not for importance).
+    /// than this (its residual) even if the oracle still asks for a few links (not after the
+    /// importance view changed: resumeRefinement).
     static constexpr double kSettleResidual = 1e-3;
 
 protected:
@@ -107,6 +108,7 @@ protected:
     void resumeRefinement() {
         linksSettled_ = false;
         refinedSinceChange_ = false;
+        settleOnResidual_ = false;
     }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
@@ -230,6 +232,7 @@ private:
     bool leafRowsCurrent_ = false;
     bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
     bool refinedSinceChange_ = false;  ///< a step refined since the materials, the view or reset() changed
+    bool settleOnResidual_ = true;  ///< kSettleResidual applies (not once the importance view changed)
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;
