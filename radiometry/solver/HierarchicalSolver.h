@@ -8,7 +8,9 @@
 // minElementArea. dF is the form factor's uncertainty: the spread of the exact point-to-polygon
 // kernel over the receiver (the error of giving the whole receiver one value; near contact its
 // corners count too), or the whole form factor when a few rays find the link partially visible, so
-// shadow boundaries refine further than fully visible or fully hidden links. Where the source is small
+// shadow boundaries refine further than fully visible or fully hidden links (a link whose rays were
+// all blocked draws more where it would refine were it partial). Refinement stops when a step makes
+// no links or changes B by under kSettleResidual; the gather rows are then built. Where the source is small
 // against its distance the kernel is a 2 x 2 Gauss rule over it (HierarchicalFormFactor.h). Every
 // link casts its own visibility rays (an unbiased estimate). To scale by element count, leaves
 // are split down to a target area and the threshold is tied to it (hierarchicalSetupForElements).
@@ -21,6 +23,7 @@
 // at their points over the same links (HierarchicalGather.cpp), not the leaf's constant.
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <span>
 #include <vector>
@@ -86,6 +89,13 @@ public:
     static constexpr int kLinkVisibilityRays = 4;
     /// How much a link that every ray found blocked counts in the oracle, relative to a visible one.
     static constexpr double kHiddenErrorWeight = 0.25;
+    /// Rays that confirm a link every oracle ray found blocked, where the link would refine were it
+    /// partially visible (makeLink).
+    static constexpr int kHiddenCheckRays = 16;
+    /// Refinement stops, and the gather rows are built, once a step that refined changes B by less
+    /// than this (its residual) even if the oracle still asks for a few links (not after the
+    /// importance view changed: resumeRefinement).
+    static constexpr double kSettleResidual = 1e-3;
 
 protected:
     /// Called after `parent` was split (serially, between parallel phases).
@@ -95,22 +105,17 @@ protected:
     /// Called after the per-patch solution was refreshed.
     virtual void afterSolutionMapped() {}
     /// Lets refinement resume after the leaf rows stopped it (the importance changed with the view).
-    void resumeRefinement() { linksSettled_ = false; }
-    /// Stops refinement as a step that refines nothing does: the next step builds the rows, and the
-    /// links stay until a material, reset() or the view changes.
-    void settleRefinement() { linksSettled_ = true; }
+    void resumeRefinement() {
+        linksSettled_ = false;
+        refinedSinceChange_ = false;
+        settleOnResidual_ = false;
+    }
     /// A link is refined while its error estimate exceeds this (W for plain hierarchical radiosity).
     [[nodiscard]] virtual double refinementThreshold() const;
 
     /// Per-element importance (1/m^2), empty for plain hierarchical radiosity; when present the
     /// oracle weighs each link's error by it (importance-driven refinement, Smits et al. 1992).
     std::vector<double> importance_;
-    /// Patch rows (HierarchicalGather.cpp, buildPatchRows): false, a term takes its link's share
-    /// unless either of the link's ray sets was split or its receiver is over 15x the patch; true
-    /// (importance), the choice does not depend on the share's own rays (only on the oracle's set and
-    /// the receiver's size, with an emitter's terms casting rays under any receiver larger than the
-    /// patch), and links whose rays all met a blocker are gathered too.
-    bool unbiasedPatchTerms_ = false;
 
     [[nodiscard]] unsigned threads() const { return threads_; }
     /// The scene's ray caster: the shared one given (SolverOptions::rays), else the one built for
@@ -192,6 +197,8 @@ private:
     ElementTree tree_;
     std::shared_ptr<const RayCaster> caster_;  ///< sceneRays_ when links test visibility, else null
     int visibilityRays_ = 0;
+    /// The oracle's threshold when the links being made were asked for (makeLink's hidden check).
+    double hiddenCheckThreshold_ = std::numeric_limits<double>::infinity();
     std::vector<Link> links_;
     std::vector<float> linkShare_;  ///< per link, its visible share (for the gather at points)
     /// Per link, its form factor over each of the receiver's four children-to-be (their mean is the
@@ -224,6 +231,8 @@ private:
     std::vector<Rgb> leafIrradiance_;
     bool leafRowsCurrent_ = false;
     bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
+    bool refinedSinceChange_ = false;  ///< a step refined since the materials, the view or reset() changed
+    bool settleOnResidual_ = true;  ///< kSettleResidual applies (not once the importance view changed)
 
     unsigned threads_ = 1;
     std::vector<std::vector<Split>> splitsPerThread_;

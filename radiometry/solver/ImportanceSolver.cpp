@@ -20,10 +20,6 @@ namespace radiant {
 ImportanceSolver::ImportanceSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                    Progress* progress)
     : HierarchicalSolver(scene, mesh, options, progress), sceneArea_(scene.totalArea()) {
-    // The patches show their rows' gather with visibility of their own wherever the links' few rays
-    // cannot stand for it (HierarchicalGather.cpp): importance leaves the surfaces out of view coarse,
-    // yet what is in view sees them.
-    unbiasedPatchTerms_ = true;
     // homeView casts rays: only when needed, and through the scene's caster when there is one.
     castEyeRays(scene, options.view ? *options.view : homeView(scene, rayCaster()));
     setImportanceToEmission();
@@ -43,22 +39,6 @@ bool ImportanceSolver::setView(const Scene& scene, const View& view) {
     resumeRefinement();
     afterSolutionMapped();
     return true;
-}
-
-IterationStats ImportanceSolver::step() {
-    // Refinement trickles on while radiosity and importance grow (a few dozen links a step on the
-    // Cornell box's 47,000), so a solve to the default tolerance often stopped before a step refined
-    // nothing, i.e. before the rows were built, and which way it went depended on the seed: the
-    // patches then showed their leaves' constants and the links' four-ray shares. Once a step adds
-    // fewer than kSettleFraction of the links while the sweep change is under kSettleChange (not in
-    // the first steps, where few links may be made against the emitters alone in a scene of many
-    // roots), refinement stops and the next step builds the rows.
-    const IterationStats& last = lastStats();
-    if (last.linksRefined > 0 && last.residual < kSettleChange &&
-        static_cast<double>(last.linksRefined) < kSettleFraction * static_cast<double>(last.links) &&
-        elements().leafCount() <= kMaxLeavesWithRows)
-        settleRefinement();
-    return HierarchicalSolver::step();
 }
 
 namespace {

@@ -29,11 +29,6 @@ public:
     bool setView(const Scene& scene, const View& view) override;
 
     [[nodiscard]] SolverMethod method() const override { return SolverMethod::Importance; }
-    /// Hierarchical's step, with refinement settled once a step adds fewer than kSettleFraction of the
-    /// links and moved the leaves by less than kSettleChange (see the .cpp).
-    IterationStats step() override;
-    static constexpr double kSettleFraction = 1e-3;
-    static constexpr double kSettleChange = 1e-2;
     void reset() override;
 
     /// Per patch: importance Y (1/m^2), the direct share r plus what reaches the eye by reflection.

@@ -194,4 +194,36 @@ TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where r
           hierarchical::pointToElementFormFactor(x, steep, source));
 }
 
+TEST_CASE("hierarchical gather kernel: the 3 x 3 Gauss rule within 0.02% of Lambert's kernel where the rows use it") {
+    // The gather rows' kernel between the exact contour integral and the far field: points whose
+    // distance from the source's centroid, less sqrt(A), is sqrt(6 A) and beyond, from oblique
+    // directions, the receiver tilted. The 2 x 2 rule is 0.45% off at the nearest of them.
+    const double side = 0.1;
+    const std::vector<glm::dvec3> square = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
+    const std::vector<glm::dvec3> triangle = {{0, 0, 0}, {side, 0, 0}, {0.3 * side, 1.2 * side, 0}};
+    int compared = 0;
+    for (const auto* corners : {&square, &triangle}) {
+        const PatchPolygon source = makeElementPolygon(*corners);
+        for (const double nearest2OverA : {hierarchical::kGaussDistanceSquaredOverArea, 10.0, 20.0, 32.0})
+            for (const double tilt : {0.0, 0.4, 1.0, 1.3})
+                for (const double offAxis : {0.0, 0.5, 1.0, 2.0, 3.0}) {
+                    CAPTURE(nearest2OverA);
+                    CAPTURE(tilt);
+                    CAPTURE(offAxis);
+                    const double r = std::sqrt(nearest2OverA * source.area) + std::sqrt(source.area);
+                    const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
+                    const glm::dvec3 x = source.centroid + r * direction;
+                    const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
+                    const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
+                    const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
+                    const double estimate = hierarchical::gaussFormFactor(x, normal, source);
+                    REQUIRE(exact > 0);
+                    if (estimate < 0) continue;  // straddles the horizon: the exact kernel is used
+                    ++compared;
+                    CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(2e-4));
+                }
+    }
+    CHECK(compared > 120);
+}
+
 } // TEST_SUITE
