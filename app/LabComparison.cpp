@@ -79,9 +79,12 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     if (b.scene && b.mesh && !showingDifference) {  // B's own colours are shown side by side only
         if (!second_) second_.emplace();
         streamSnapshotToRenderer(b, *second_, secondMaterials_);
-        // One colour scale for both halves: false colour's automatic range is A's.
+        // One colour scale for both halves: false colour's automatic range is A's. Asked for only in
+        // false colour: A's range sorts A's patches anew for each solution A takes (a tenth of the
+        // main thread's time side by side while solving), and a range moved under B recolours B.
         render::DisplaySettings settings = display;
-        if (settings.falseColourMaxW_m2 <= 0) settings.falseColourMaxW_m2 = static_cast<float>(first.legend().maxW_m2);
+        if (settings.colourMode == render::ColourMode::FalseColour && settings.falseColourMaxW_m2 <= 0)
+            settings.falseColourMaxW_m2 = static_cast<float>(first.legend().maxW_m2);
         second_->setSettings(settings);
     }
     if (!showingDifference) return;
