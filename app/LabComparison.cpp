@@ -128,6 +128,10 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     difference_->setSettings(settings);
 }
 
+bool LabComparison::hidesFirst() const {
+    return live_.comparing() && live_.comparison().view == ComparisonView::Difference && differencer_.current().mesh;
+}
+
 std::vector<render::Viewport> LabComparison::views(const render::Viewport& view) const {
     if (live_.comparing() && live_.comparison().view == ComparisonView::SideBySide) return split(view);
     return {view};
@@ -137,8 +141,7 @@ void LabComparison::draw(render::PatchRenderer& first, const render::DisplaySett
                          const render::Camera& camera, const render::Viewport& view, int framebufferHeight) {
     first.setSettings(display);
     const std::vector<render::Viewport> shown = views(view);
-    if (live_.comparing() && live_.comparison().view == ComparisonView::Difference && difference_ && differenceMesh_ &&
-        differencer_.current().mesh) {
+    if (hidesFirst() && difference_ && differenceMesh_) {
         // A is not shown: its colours wait for the view that shows it (recolouring both meshes every
         // step cost the difference view a quarter more main-thread time than side by side).
         difference_->prepare();
