@@ -198,8 +198,14 @@ struct Lab::State {
         live.refresh();
         const Snapshot& s = live.snapshot();
         if (!s.scene || !s.mesh) return;
-        streamSnapshotToRenderer(s, *patches, materialsShown);
+        // A's renderer takes A's solutions only while they are on screen: the difference view hides
+        // them, and each would cost a pass over A's patches (in false colour the Display panel
+        // still shows A's legend: taken then). The frame the difference goes (a new mesh, the view
+        // switched back), A catches up before it is drawn.
+        const bool firstHidden = comparison->hidesFirst() && display.colourMode != render::ColourMode::FalseColour;
+        if (!firstHidden) streamSnapshotToRenderer(s, *patches, materialsShown);
         comparison->stream(display, *patches);
+        if (firstHidden && !comparison->hidesFirst()) streamSnapshotToRenderer(s, *patches, materialsShown);
         if (s.scene->name != sceneShown) {
             // The home view casts with the scene's one ray caster, which the solver thread builds
             // (the window's first frames used the outside framing meanwhile).

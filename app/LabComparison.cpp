@@ -79,9 +79,12 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     if (b.scene && b.mesh && !showingDifference) {  // B's own colours are shown side by side only
         if (!second_) second_.emplace();
         streamSnapshotToRenderer(b, *second_, secondMaterials_);
-        // One colour scale for both halves: false colour's automatic range is A's.
+        // One colour scale for both halves: false colour's automatic range is A's. Asked for only in
+        // false colour: A's range sorts A's patches anew for each solution A takes (a tenth of the
+        // main thread's time side by side while solving), and a range moved under B recolours B.
         render::DisplaySettings settings = display;
-        if (settings.falseColourMaxW_m2 <= 0) settings.falseColourMaxW_m2 = static_cast<float>(first.legend().maxW_m2);
+        if (settings.colourMode == render::ColourMode::FalseColour && settings.falseColourMaxW_m2 <= 0)
+            settings.falseColourMaxW_m2 = static_cast<float>(first.legend().maxW_m2);
         second_->setSettings(settings);
     }
     if (!showingDifference) return;
@@ -125,6 +128,10 @@ void LabComparison::stream(const render::DisplaySettings& display, const render:
     difference_->setSettings(settings);
 }
 
+bool LabComparison::hidesFirst() const {
+    return live_.comparing() && live_.comparison().view == ComparisonView::Difference && differencer_.current().mesh;
+}
+
 std::vector<render::Viewport> LabComparison::views(const render::Viewport& view) const {
     if (live_.comparing() && live_.comparison().view == ComparisonView::SideBySide) return split(view);
     return {view};
@@ -134,8 +141,7 @@ void LabComparison::draw(render::PatchRenderer& first, const render::DisplaySett
                          const render::Camera& camera, const render::Viewport& view, int framebufferHeight) {
     first.setSettings(display);
     const std::vector<render::Viewport> shown = views(view);
-    if (live_.comparing() && live_.comparison().view == ComparisonView::Difference && difference_ && differenceMesh_ &&
-        differencer_.current().mesh) {
+    if (hidesFirst() && difference_ && differenceMesh_) {
         // A is not shown: its colours wait for the view that shows it (recolouring both meshes every
         // step cost the difference view a quarter more main-thread time than side by side).
         difference_->prepare();

@@ -27,6 +27,9 @@ public:
     void cycle();
     /// Hands B's newest snapshot (and, in the difference view, the difference) to their renderers.
     void stream(const render::DisplaySettings& display, const render::PatchRenderer& first);
+    /// The difference view is up with a difference to draw: A's own colours are not on screen (the
+    /// lab then leaves A's renderer alone, and streams it again when A shows).
+    [[nodiscard]] bool hidesFirst() const;
     /// The viewports the 3D view is drawn in this frame, in framebuffer pixels: `view` itself, or its
     /// two halves (A left, B right) side by side.
     [[nodiscard]] std::vector<render::Viewport> views(const render::Viewport& view) const;

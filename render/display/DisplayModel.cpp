@@ -268,8 +268,9 @@ bool DisplayModel::refreshColours() {
     const auto colourOf = [&](const Rgb& b, std::size_t patch) {
         double value = falseColour ? mappedValue(b, patch) : 0.0;
         if (!std::isfinite(value)) value = 0.0;  // tinted grey (makeTints)
-        const float position = falseColour ? static_cast<float>(range.position(value)) : 0.0f;
-        return glm::vec4(toneCurve_(b.x * scale), toneCurve_(b.y * scale), toneCurve_(b.z * scale), position);
+        // False colour shows the map's colour alone (patch.frag.glsl): no tone curve for it.
+        if (falseColour) return glm::vec4(0.0f, 0.0f, 0.0f, static_cast<float>(range.position(value)));
+        return glm::vec4(toneCurve_(b.x * scale), toneCurve_(b.y * scale), toneCurve_(b.z * scale), 0.0f);
     };
     DisplayColours& c = colours_;
     c.patch.resize(n);

@@ -30,7 +30,7 @@ using Tint = glm::vec4;
 Tint addTint(const Tint& a, const Tint& b);
 
 /// Display colours as the shaders take them: rgb sRGB-encoded, a the position on the colour map
-/// (false colour only; 0 otherwise).
+/// (false colour only; 0 otherwise). A false-colour solution leaves rgb 0: the shader maps a alone.
 struct DisplayColours {
     std::vector<glm::vec4> patch;   ///< per patch: flat shading, and reflectance before a solution
     std::vector<glm::vec4> vertex;  ///< per smoothing vertex: smooth shading
