@@ -93,4 +93,12 @@ inline std::size_t countTJunctions(const PatchMesh& mesh, std::size_t surface, d
     return found;
 }
 
+/// The summed area of surface `surface`'s patches (m^2).
+inline double surfacePatchArea(const PatchMesh& mesh, std::size_t surface) {
+    double sum = 0;
+    for (std::size_t p = mesh.surfaceFirstPatch[surface]; p < mesh.surfaceFirstPatch[surface + 1]; ++p)
+        sum += mesh.patches[p].area;
+    return sum;
+}
+
 } // namespace radiant::test

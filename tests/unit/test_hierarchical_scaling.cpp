@@ -143,50 +143,67 @@ TEST_CASE("hierarchical scaling: 4x the elements, links per leaf at most 4^(1/3)
 
 #include <numbers>
 
+#include <initializer_list>
+#include <vector>
+
 #include <glm/geometric.hpp>
 
 #include "radiometry/mesh/ElementTree.h"
 #include "radiometry/solver/HierarchicalFormFactor.h"
 
+namespace {
+
+/// The far-field and gather-kernel tests' receivers: for a 0.1 m square and a triangle source,
+/// points at distance distance(source, k) from its centroid for each k, from oblique directions,
+/// the receiver facing the source turned by up to 75 degrees about a side axis.
+template <class Distance, class Visit>
+void forEachObliqueReceiver(std::initializer_list<double> ks, Distance distance, Visit visit) {
+    const double side = 0.1;
+    const std::vector<glm::dvec3> square = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
+    const std::vector<glm::dvec3> triangle = {{0, 0, 0}, {side, 0, 0}, {0.3 * side, 1.2 * side, 0}};
+    for (const auto* corners : {&square, &triangle}) {
+        const PatchPolygon source = makeElementPolygon(*corners);
+        REQUIRE(source.normal.z == doctest::Approx(1.0).scale(0));
+        for (const double k : ks)
+            for (const double tilt : {0.0, 0.4, 1.0, 1.3})
+                for (const double offAxis : {0.0, 0.5, 1.0, 2.0, 3.0}) {
+                    CAPTURE(k);
+                    CAPTURE(tilt);
+                    CAPTURE(offAxis);
+                    const double r = distance(source, k);
+                    const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
+                    const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
+                    const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
+                    visit(source, source.centroid + r * direction, normal, r);
+                }
+    }
+}
+
+} // namespace
+
 TEST_SUITE("hierarchical") {
 
 TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where refinement uses it") {
     // A 0.1 m square (and a triangle) source seen from points at distance r with r^2 = 32 A (the
-    // threshold) and beyond, from oblique directions, the receiver tilted; the reference is Lambert's
-    // exact contour integral (clipped at the horizon). The one-point disk estimate was 1.5-2.7% low here.
-    const double side = 0.1;
-    const std::vector<glm::dvec3> square = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
-    const std::vector<glm::dvec3> triangle = {{0, 0, 0}, {side, 0, 0}, {0.3 * side, 1.2 * side, 0}};
+    // threshold) and beyond; the reference is Lambert's exact contour integral (clipped at the
+    // horizon). The one-point disk estimate was 1.5-2.7% low here.
     int compared = 0;
-    for (const auto* corners : {&square, &triangle}) {
-        const PatchPolygon source = makeElementPolygon(*corners);
-        REQUIRE(source.normal.z == doctest::Approx(1.0).scale(0));
-        for (const double r2OverA : {32.0, 50.0, 100.0, 1000.0})
-            for (const double tilt : {0.0, 0.4, 1.0, 1.3})
-                for (const double offAxis : {0.0, 0.5, 1.0, 2.0, 3.0}) {
-                    CAPTURE(r2OverA);
-                    CAPTURE(tilt);
-                    CAPTURE(offAxis);
-                    const double r = std::sqrt(r2OverA * source.area);
-                    const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
-                    const glm::dvec3 x = source.centroid + r * direction;
-                    // The receiver faces the source, turned by `tilt` (up to 75 degrees) about a side axis.
-                    const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
-                    const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
-                    const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
-                    const double estimate = hierarchical::farFieldFormFactor(x, normal, source);
-                    REQUIRE(exact > 0);
-                    if (estimate < 0) continue;  // straddles the horizon: the exact kernel is used
-                    ++compared;
-                    CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(0.002));
-                    // No point sees more than a differential source facing it squarely would give.
-                    CHECK(exact <= source.area / (std::numbers::pi * r * r) * 1.01);
-                }
-    }
+    forEachObliqueReceiver(
+        {32.0, 50.0, 100.0, 1000.0}, [](const PatchPolygon& source, double r2OverA) { return std::sqrt(r2OverA * source.area); },
+        [&](const PatchPolygon& source, const glm::dvec3& x, const glm::dvec3& normal, double r) {
+            const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
+            const double estimate = hierarchical::farFieldFormFactor(x, normal, source);
+            REQUIRE(exact > 0);
+            if (estimate < 0) return;  // straddles the horizon: the exact kernel is used
+            ++compared;
+            CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(0.002));
+            // No point sees more than a differential source facing it squarely would give.
+            CHECK(exact <= source.area / (std::numbers::pi * r * r) * 1.01);
+        });
     CHECK(compared > 120);
     // A source straddling the receiver's horizon is left to the exact kernel.
     // (Above the source's centre, its tangent plane nearly vertical: half the source lies behind it.)
-    const PatchPolygon source = makeElementPolygon(square);
+    const PatchPolygon source = makeElementPolygon(std::vector<glm::dvec3>{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}, {0, 0.1, 0}});
     const glm::dvec3 x = source.centroid + glm::dvec3(0, 0, 0.5);
     const glm::dvec3 steep = glm::normalize(glm::dvec3(1, 0, -0.02));
     CHECK(hierarchical::farFieldFormFactor(x, steep, source) < 0);
@@ -196,33 +213,22 @@ TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where r
 
 TEST_CASE("hierarchical gather kernel: the 3 x 3 Gauss rule within 0.02% of Lambert's kernel where the rows use it") {
     // The gather rows' kernel between the exact contour integral and the far field: points whose
-    // distance from the source's centroid, less sqrt(A), is sqrt(6 A) and beyond, from oblique
-    // directions, the receiver tilted. The 2 x 2 rule is 0.45% off at the nearest of them.
-    const double side = 0.1;
-    const std::vector<glm::dvec3> square = {{0, 0, 0}, {side, 0, 0}, {side, side, 0}, {0, side, 0}};
-    const std::vector<glm::dvec3> triangle = {{0, 0, 0}, {side, 0, 0}, {0.3 * side, 1.2 * side, 0}};
+    // distance from the source's centroid, less sqrt(A), is sqrt(6 A) and beyond. The 2 x 2 rule is
+    // 0.45% off at the nearest of them.
     int compared = 0;
-    for (const auto* corners : {&square, &triangle}) {
-        const PatchPolygon source = makeElementPolygon(*corners);
-        for (const double nearest2OverA : {hierarchical::kGaussDistanceSquaredOverArea, 10.0, 20.0, 32.0})
-            for (const double tilt : {0.0, 0.4, 1.0, 1.3})
-                for (const double offAxis : {0.0, 0.5, 1.0, 2.0, 3.0}) {
-                    CAPTURE(nearest2OverA);
-                    CAPTURE(tilt);
-                    CAPTURE(offAxis);
-                    const double r = std::sqrt(nearest2OverA * source.area) + std::sqrt(source.area);
-                    const glm::dvec3 direction = glm::normalize(glm::dvec3(offAxis, 0.3 * offAxis, 1.0));
-                    const glm::dvec3 x = source.centroid + r * direction;
-                    const glm::dvec3 across = glm::normalize(glm::cross(direction, glm::dvec3(0, 1, 0)));
-                    const glm::dvec3 normal = glm::normalize(-std::cos(tilt) * direction + std::sin(tilt) * across);
-                    const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
-                    const double estimate = hierarchical::gaussFormFactor(x, normal, source);
-                    REQUIRE(exact > 0);
-                    if (estimate < 0) continue;  // straddles the horizon: the exact kernel is used
-                    ++compared;
-                    CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(2e-4));
-                }
-    }
+    forEachObliqueReceiver(
+        {hierarchical::kGaussDistanceSquaredOverArea, 10.0, 20.0, 32.0},
+        [](const PatchPolygon& source, double nearest2OverA) {
+            return std::sqrt(nearest2OverA * source.area) + std::sqrt(source.area);
+        },
+        [&](const PatchPolygon& source, const glm::dvec3& x, const glm::dvec3& normal, double) {
+            const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
+            const double estimate = hierarchical::gaussFormFactor(x, normal, source);
+            REQUIRE(exact > 0);
+            if (estimate < 0) return;  // straddles the horizon: the exact kernel is used
+            ++compared;
+            CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(2e-4));
+        });
     CHECK(compared > 120);
 }
 

@@ -35,13 +35,6 @@ std::size_t patchesOf(const PatchMesh& mesh, std::size_t surface) {
     return mesh.surfaceFirstPatch[surface + 1] - mesh.surfaceFirstPatch[surface];
 }
 
-double areaOf(const PatchMesh& mesh, std::size_t surface) {
-    double sum = 0;
-    for (std::size_t p = mesh.surfaceFirstPatch[surface]; p < mesh.surfaceFirstPatch[surface + 1]; ++p)
-        sum += mesh.patches[p].area;
-    return sum;
-}
-
 /// A closed 2 m box seen from inside: a glowing ceiling (E = 1, black), grey walls (0.5) and a floor
 /// (0.7) given as `floor`.
 Scene boxWithFloor(std::vector<Face> floor) {
@@ -71,7 +64,7 @@ std::vector<double> surfaceMeans(const Scene& scene, const PatchMesh& mesh) {
         double power = 0;
         for (std::size_t p = mesh.surfaceFirstPatch[s]; p < mesh.surfaceFirstPatch[s + 1]; ++p)
             power += mesh.patches[p].area * solver->solution()[p].x;
-        means.push_back(power / areaOf(mesh, s));
+        means.push_back(power / radiant::test::surfacePatchArea(mesh, s));
     }
     return means;
 }
@@ -179,7 +172,7 @@ TEST_CASE("rounded cube of 3,072 triangles: patches follow the requested area, c
         const std::size_t count = patchesOf(mesh, cube);
         MESSAGE(count << " patches at " << maxArea << " m^2 for " << area / maxArea << " = area / max");
         CHECK(mesh.size() == estimatePatchCount(scene, {maxArea}));
-        CHECK(areaOf(mesh, cube) == relativeTo(area, 1e-9));
+        CHECK(radiant::test::surfacePatchArea(mesh, cube) == relativeTo(area, 1e-9));
         // Within twice area / max where the request is finer than the triangles; where it is not,
         // each triangle stays at least one patch (the loader groups flat regions only, and no two
         // triangles of this superellipsoid are coplanar).

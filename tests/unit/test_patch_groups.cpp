@@ -24,6 +24,7 @@
 #include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolverFactories.h"
 #include "radiometry/solver/Solver.h"
+#include "tests/support/MeshTopology.h"
 #include "tests/support/Relative.h"
 #include "tests/support/RunRadiant.h"
 
@@ -71,13 +72,6 @@ void checkPartition(const PatchMesh& mesh, const PatchGroups& groups, double max
 
 std::size_t groupsOf(const PatchGroups& groups, std::size_t surface) {
     return groups.surfaceFirstGroup[surface + 1] - groups.surfaceFirstGroup[surface];
-}
-
-double surfaceArea(const PatchMesh& mesh, std::size_t surface) {
-    double sum = 0;
-    for (std::size_t p = mesh.surfaceFirstPatch[surface]; p < mesh.surfaceFirstPatch[surface + 1]; ++p)
-        sum += mesh.patches[p].area;
-    return sum;
 }
 
 /// Inside a closed convex surface emitting 1 and reflecting rho everywhere (no visibility rays: it
@@ -129,7 +123,7 @@ TEST_CASE("rounded cube and sphere of thousands of triangles: groups follow the 
             const PatchMesh mesh = meshAt(scene, area);
             const PatchGroups groups = groupAt(mesh, area);
             checkPartition(mesh, groups, area);
-            const double total = surfaceArea(mesh, surface);
+            const double total = radiant::test::surfacePatchArea(mesh, surface);
             const double ideal = total / area;
             const auto count = static_cast<double>(groupsOf(groups, surface));
             MESSAGE(std::string(c.surface) << " at " << area << " m^2: " << mesh.surfaceFirstPatch[surface + 1] - mesh.surfaceFirstPatch[surface]
