@@ -40,8 +40,9 @@ public:
     /// Handles input, takes the newest snapshot (never waits for the solver), draws one frame and
     /// shows it.
     void frame();
-    /// As frame(), but first sleeps until input arrives (at most `maxWaitSeconds`) when nothing on
-    /// screen can change: the window's loop, so an idle lab leaves the CPU alone.
+    /// As frame(), but first sleeps until input arrives (at most `maxWaitSeconds` while a panel
+    /// refines unprompted, the probe's path tracer; 4x that otherwise) when nothing on screen can
+    /// change: the window's loop, so an idle lab leaves the CPU alone.
     void frameWhenNeeded(double maxWaitSeconds = 0.5);
     /// True while frames can show something new without input (see frameWhenNeeded).
     [[nodiscard]] bool changing() const;

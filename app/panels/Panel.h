@@ -13,6 +13,9 @@ public:
     /// True while the panel changes without input (background work in flight, a run animating):
     /// the lab keeps drawing frames instead of waiting for events.
     [[nodiscard]] virtual bool busy() const { return false; }
+    /// True while the panel shows work that refines slowly and posts no event (the path tracer):
+    /// the idle lab then wakes twice a second to show it, else seldom (Lab::frameWhenNeeded).
+    [[nodiscard]] virtual bool refreshesUnprompted() const { return false; }
     /// Called inside the sidebar window, between the panel's header and the next one.
     virtual void draw() = 0;
     /// Opens every section inside the panel at its next draw (the sidebar's "expand all").

@@ -41,6 +41,7 @@ public:
     void draw() override;
     /// A measurement in flight or due: its reading arrives without input.
     [[nodiscard]] bool busy() const override;
+    [[nodiscard]] bool refreshesUnprompted() const override { return pick_ && pathTraced_.state().refining; }
 
     /// Casts the ray into the current scene and probes the nearest hit; false when it hits nothing.
     bool pick(const glm::dvec3& origin, const glm::dvec3& direction);

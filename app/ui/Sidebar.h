@@ -24,6 +24,11 @@ public:
             if (panel->busy()) return true;
         return false;
     }
+    [[nodiscard]] bool refreshesUnprompted() const {
+        for (const auto& panel : panels_)
+            if (panel->refreshesUnprompted()) return true;
+        return false;
+    }
     /// Draws the sidebar; returns its width in ImGui (window) coordinates.
     float draw(const std::string& heading, const std::string& subheading);
     /// At the next draw, expands the panel titled `title` (and every section inside it) and collapses
