@@ -18,10 +18,10 @@
 namespace radiant {
 
 /// Above this many patches the default is hierarchical. Measured with `radiant solve cornell-box
-/// --method M --max-patch-area A` (CPU seconds, 2026-12-02): progressive 1.35 s at 2,805 patches,
-/// 3.4 s at 5,304, 9.2 s at 10,124; hierarchical 0.13, 0.12 and 0.18 s. 3,000 keeps the lab's
-/// opening on the Cornell box default (2,805 patches) at about a second. docs/ARCHITECTURE.md,
-/// "Defaults".
+/// --method M --max-patch-area A` (wall seconds on the idle 2-core machine, 2026-12-02, bd38714):
+/// progressive 0.80 s at 2,805 patches, 1.75 s at 5,304, 4.6 s at 10,124; hierarchical 1.03, 1.79 and
+/// 3.37 s. Below the crossing progressive refinement is faster, above it grows faster.
+/// docs/ARCHITECTURE.md, "Defaults".
 inline constexpr std::size_t kProgressiveMaxPatches = 3000;
 
 struct MethodChoice {

@@ -9,8 +9,8 @@ namespace radiant {
 
 struct SolveDefaults {
     /// While the mesh is small (DefaultMethod.h: chooseDefaultMethod picks hierarchical beyond).
-    /// Within 0.33% mean / 1.6% worst of the path tracer at the Cornell box's 18 points in 1.46 s,
-    /// where Gauss-Seidel is 0.24% / 0.94% after 9.5 s of form factors (README, the accuracy table).
+    /// Within 0.33% mean / 1.6% worst of the path tracer at the Cornell box's 18 points in 0.79 s,
+    /// where Gauss-Seidel is 0.24% / 0.94% after 5.8 s of form factors (README, the accuracy table).
     SolverMethod method = SolverMethod::Progressive;
     /// m^2: 2,805 patches in the Cornell box (its floor cut along the blocks' footprints), where
     /// converged Gauss-Seidel is within 0.24% mean and 0.94% worst of the path tracer at the accuracy
