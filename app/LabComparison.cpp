@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/SnapshotToRenderer.h"
+#include "app/solver/ConvergenceQuantity.h"
 #include "app/ui/ComparisonColours.h"
 #include "app/ui/LegendOverlay.h"
 #include "render/GlContext.h"
@@ -23,7 +24,9 @@ std::string progressLine(const Snapshot& s) {
     char text[96];
     if (s.stats.iteration == 0) return s.running ? "starting" : "ready (Space runs both)";
     const bool converged = !s.running && s.stats.residual < s.tolerance;
-    std::snprintf(text, sizeof text, "iteration %zu, residual %.1e%s", s.stats.iteration, s.stats.residual,
+    // Each method's own measure by name, as the status line and the plot's axis say it.
+    std::snprintf(text, sizeof text, "iteration %zu, %s %.1e%s", s.stats.iteration,
+                  std::string(convergenceQuantity(s.method).name).c_str(), s.stats.residual,
                   converged ? ", converged" : "");
     return text;
 }
