@@ -156,6 +156,7 @@ TEST_CASE("a double-sided face's twins lie in one plane and exchange nothing, fr
     CHECK(exchanging == 0);
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("the inside of a closed double-sided sphere stays dark in every method") {
     // A float-stored 16 x 8 double-sided UV sphere (emitting nothing) in a glowing closed box, all of
     // reflectance rho = 0.5: nothing reaches the sphere's inside (E = 0, so B = 0 at every inner

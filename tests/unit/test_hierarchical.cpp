@@ -211,6 +211,7 @@ TEST_CASE("element tree: memory grows linearly with the elements") {
     MESSAGE(sizes.back().first << " elements in " << sizes.back().second << " bytes (" << last << " B/element)");
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("hierarchical: the furnace converges to E / (1 - rho)") {
     for (const SolverMethod method : kMethods)
         for (const auto& values : {std::pair{0.3, glm::dvec3(2, 0.5, 1)}, std::pair{0.5, glm::dvec3(1, 1, 1)}}) {
@@ -278,6 +279,7 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
     }
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("hierarchical: energy balance (1 - rho) sum A B = sum A E in a closed box") {
     for (const double rho : {0.7}) {
         // Only the ceiling emits, per band differently: radiosity is far from uniform.

@@ -131,6 +131,7 @@ TEST_CASE("hierarchical furnace inside a tessellated sphere: every leaf is E / (
     CHECK(worstPatch < 0.03);
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("hierarchical sphere in a glowing box: (1 - rho) sum A B = sum A E, and the sphere is E / (1 - rho)") {
     // Every surface emits and reflects alike, so every point of the closed enclosure has B = E / (1 - rho)
     // (it sees the enclosure whole, whose every point has the same B), the sphere's outside included.
@@ -162,6 +163,7 @@ TEST_CASE("hierarchical sphere in a glowing box: (1 - rho) sum A B = sum A E, an
     }
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("hierarchical sphere room (tests/data/curved): every surface, the sphere's underside and the floor in its shadow within 2% of Gauss-Seidel on the same mesh") {
     const Scene scene = loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/curved/sphere_room.gltf").scene;
     const PatchMesh mesh = meshScene(scene, MeshingOptions{0.01});

@@ -39,6 +39,7 @@ Scaled solveFor(const Scene& scene, const PatchMesh& mesh, std::size_t elements)
 
 TEST_SUITE("hierarchical") {
 
+// ctest-case-labels: heavy
 TEST_CASE("hierarchical scaling: the furnace gives E / (1 - rho) on every leaf") {
     // Most leaves, split for resolution alone, have no links of their own: their rows gather over
     // their ancestors' links with the leaf's own form factors (buildLeafRows). In a furnace every leaf

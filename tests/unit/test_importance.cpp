@@ -138,6 +138,7 @@ TEST_CASE("unit cube, rho 0.5, 0.01 m^2: importance from the home view agrees wi
     }
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("Cornell box at the defaults: the short block's sides as the probe reads them agree with the path tracer") {
     // The side facing the camera sees, up close, the floor strip in front of the block: in the block's
     // penumbra and below the camera's view, so importance leaves it coarse, and its patches must take

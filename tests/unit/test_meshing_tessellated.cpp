@@ -185,6 +185,7 @@ TEST_CASE("rounded cube of 3,072 triangles: patches follow the requested area, c
     }
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("furnace inside a tessellated sphere with stitched triangles: B = E / (1 - rho) on every patch") {
     // The UV sphere's triangles run from 0.004 m^2 at the poles to 0.019 m^2 at the equator: at
     // 0.01 m^2 the large ones are cut in four and their smaller neighbours stitched to them.

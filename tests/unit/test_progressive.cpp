@@ -238,6 +238,7 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
     check(0.3);
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface and patch by patch") {
     // Same mesh, same kernel, so the converged answers must agree up to visibility sampling. A block
     // used to shoot its mean radiosity as if uniform over its outline, with visibility rays that ran
@@ -278,6 +279,7 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
     }
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("Cornell box: converged progressive refinement matches Gauss-Seidel patch by patch") {
     // Same mesh, same kernel; every patch shoots alone (classic progressive refinement), so what is
     // left is each method's visibility sampling: the light's shots take 16 rays per receiver and 80

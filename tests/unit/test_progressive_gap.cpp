@@ -114,6 +114,7 @@ GapAgreement progressiveInTheGap(std::size_t block) {
 
 TEST_SUITE("progressive") {
 
+// ctest-case-labels: heavy
 TEST_CASE("Cornell box at the default mesh: default progressive matches converged Gauss-Seidel in the blocks' gap") {
     // The default shooter count gives blocks of 7 here (62 shooters; the short block's side is one).
     // With the full penumbra ray count only for shots of 25% of the emitted power or more, the few

@@ -204,6 +204,7 @@ TEST_CASE("furnace inside the grouped bevelled box: B = E / (1 - rho) on every p
     checkClosedFurnace(scene, mesh, 0.5);  // the box's material: reflectance 0.5, exitance 1 W/m^2
 }
 
+// ctest-case-labels: heavy
 TEST_CASE("the grouped cylinder room solves as the ungrouped one: the cap's irradiance and the floor's") {
     // Both meshed at the same area and solved by Gauss-Seidel with visibility: grouping changes
     // only how the cap and the side are cut (ungrouped, each of the cap's 336 triangles is a patch).
