@@ -147,188 +147,236 @@ bool split(const std::vector<glm::dvec3>& polygon, const Line& line, std::vector
     return front.size() >= 3 && back.size() >= 3;
 }
 
-} // namespace
-
-ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings) {
-    ContactPolygons result(scene.surfaces.size());
-    glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
+/// Every edge of every finite face, with the scene's bounds.
+struct SceneEdges {
     std::vector<SceneEdge> edges;
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
+};
+
+SceneEdges collectEdges(const Scene& scene) {
+    SceneEdges result;
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
-        result[s].resize(scene.surfaces[s].faces.size());
         for (std::uint32_t f = 0; f < scene.surfaces[s].faces.size(); ++f) {
             const auto& v = scene.surfaces[s].faces[f].vertices;
             bool finite = true;
             for (const glm::dvec3& p : v) finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
             if (!finite) continue;  // refused by the mesher, with its name
             for (std::size_t i = 0; i < v.size(); ++i) {
-                lo = glm::min(lo, v[i]);
-                hi = glm::max(hi, v[i]);
-                edges.push_back({v[i], v[(i + 1) % v.size()], s, f});
+                result.lo = glm::min(result.lo, v[i]);
+                result.hi = glm::max(result.hi, v[i]);
+                result.edges.push_back({v[i], v[(i + 1) % v.size()], s, f});
             }
         }
     }
-    if (!(lo.x <= hi.x)) return result;
-    const double extent = glm::length(hi - lo);
-    if (!(extent > 0) || !std::isfinite(extent)) return result;
-    const double planeTolerance = kContactPlaneTolerance * extent, snap = kContactSnap * extent;
-    const auto usable = [](const Face& face) { return face.vertices.size() >= 3 && face.area > 0 && std::isfinite(face.area); };
+    return result;
+}
 
-    EdgeGrid grid(std::move(edges), lo, extent / 64);
+bool usable(const Face& face) { return face.vertices.size() >= 3 && face.area > 0 && std::isfinite(face.area); }
+
+/// Tolerances of one scene, from its diagonal (ContactCuts.h).
+struct ContactTolerances {
+    double plane = 0;  ///< m: how far from a face's plane a contact edge may lie
+    double snap = 0;  ///< m: the largest snap of a line
+    double onEdge = 0;  ///< m: a cut's end this close to an edge lies on it
+};
+
+/// The lines that contacts cut face f of surface s along (several per contact when found from
+/// several sides; they are merged once spread over the plane).
+std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::uint32_t f, EdgeGrid& grid,
+                                     const ContactTolerances& tolerance) {
+    std::vector<Line> lines;
+    const Face& face = scene.surfaces[s].faces[f];
+    if (!usable(face)) return lines;
+    glm::dvec3 flo(std::numeric_limits<double>::max()), fhi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& v : face.vertices) flo = glm::min(flo, v), fhi = glm::max(fhi, v);
+    grid.near(flo, fhi, [&](const SceneEdge& edge) {
+        if (edge.surface == s && edge.face == f) return;
+        const Face& other = scene.surfaces[edge.surface].faces[edge.face];
+        if (!usable(other) || std::abs(glm::dot(other.normal, face.normal)) > 1 - 1e-6) return;
+        if (std::abs(planeDistance(face, edge.a)) > tolerance.plane || std::abs(planeDistance(face, edge.b)) > tolerance.plane)
+            return;
+        // The other face must stand on this face's front (a wall below a floor lights nothing here).
+        double lowest = 0, highest = 0;
+        for (const glm::dvec3& v : other.vertices) {
+            lowest = std::min(lowest, planeDistance(face, v));
+            highest = std::max(highest, planeDistance(face, v));
+        }
+        if (lowest < -tolerance.plane || highest <= tolerance.plane) return;
+        // A small thing's contact snaps at a share of its own size, not the scene's: a chair
+        // leg in a hall still cuts, and lines a leg's width apart stay apart.
+        const double lineSnap = std::min(tolerance.snap, kContactSnapOfEdge * glm::distance(edge.a, edge.b));
+        if (lengthInside(face.vertices, face.normal, edge.a, edge.b, lineSnap) <= lineSnap) return;
+        // Ordered ends, so the same contact read from a file (floats, another winding) makes the
+        // same line.
+        const bool ordered = lexicographicallyLess(edge.a, edge.b);
+        const glm::dvec3& a = ordered ? edge.a : edge.b;
+        const glm::dvec3& b = ordered ? edge.b : edge.a;
+        lines.push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
+    });
+    return lines;
+}
+
+/// Every face of the surface in the plane of a cut face takes the cut face's lines, in a fixed order,
+/// each line once.
+std::vector<std::vector<Line>> spreadOverPlanes(const Surface& surface, const std::vector<std::vector<Line>>& lines,
+                                                double planeTolerance) {
+    std::vector<std::vector<Line>> applied(surface.faces.size());
+    for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
+        if (lines[f].empty()) continue;
+        const Face& face = surface.faces[f];
+        for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+            const Face& other = surface.faces[g];
+            if (!usable(other) || glm::dot(other.normal, face.normal) < 1 - 1e-6) continue;
+            bool coplanar = true;
+            for (const glm::dvec3& v : other.vertices) coplanar &= std::abs(planeDistance(face, v)) <= planeTolerance;
+            if (coplanar) applied[g].insert(applied[g].end(), lines[f].begin(), lines[f].end());
+        }
+    }
+    // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's (the
+    // two edges leaving a footprint's corner share its point, so the direction breaks the tie).
+    // A contact found from two faces of the plane (a floor stored as two triangles) cuts once.
+    for (auto& faceLines : applied) {
+        std::sort(faceLines.begin(), faceLines.end(), [](const Line& l, const Line& r) {
+            return l.point != r.point ? lexicographicallyLess(l.point, r.point) : lexicographicallyLess(l.across, r.across);
+        });
+        faceLines.erase(std::unique(faceLines.begin(), faceLines.end(),
+                                    [](const Line& l, const Line& r) {
+                                        return glm::distance(l.point, r.point) <= std::min(l.snap, r.snap) &&
+                                               glm::dot(l.across, r.across) > kSameDirection;
+                                    }),
+                        faceLines.end());
+    }
+    return applied;
+}
+
+/// The pieces of one surface's faces cut by their lines ([face]; empty where uncut), with the points
+/// the cuts made on the pieces' edges; nothing when the pieces would pass kMostContactPieces.
+struct SurfacePieces {
+    std::vector<std::vector<std::vector<glm::dvec3>>> pieces;
+    std::vector<glm::dvec3> made;
+    std::size_t linesApplied = 0;
+    bool overBudget = false;
+};
+
+SurfacePieces cutByLines(const Surface& surface, const std::vector<std::vector<Line>>& applied) {
+    // Each line cuts every piece of the plane it crosses (ContactCuts.h: why not only the pieces its
+    // contact segment crosses).
+    SurfacePieces result;
+    result.pieces.resize(surface.faces.size());
+    std::size_t piecesSoFar = 0;
+    for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
+        if (applied[g].empty()) continue;
+        result.linesApplied += applied[g].size();
+        std::vector<std::vector<glm::dvec3>> polygons{surface.faces[g].vertices}, next;
+        std::vector<glm::dvec3> front, back;
+        for (const Line& line : applied[g]) {
+            next.clear();
+            for (auto& polygon : polygons) {
+                if (split(polygon, line, front, back, result.made)) {
+                    next.push_back(front);
+                    next.push_back(back);
+                } else {
+                    next.push_back(std::move(polygon));
+                }
+            }
+            std::swap(polygons, next);
+            // Whole lines across a crowded plane multiply (n lines in general position: about n^2 / 2
+            // pieces; 30 turned desks on a floor hung the load for minutes).
+            if (piecesSoFar + polygons.size() > kMostContactPieces) {
+                result.overBudget = true;
+                return result;
+            }
+        }
+        piecesSoFar += polygons.size();
+        if (polygons.size() > 1) result.pieces[g] = std::move(polygons);
+    }
+    return result;
+}
+
+/// A cut ends on an edge that a face beside it keeps whole (a face of the surface out of the plane):
+/// that edge takes the cut's end as a corner, so the surface stays conforming. Such a polygon has
+/// corners on a straight side, which a fan from a corner would turn into flat triangles; it is fanned
+/// from its centre instead. Returns the face's convex pieces, or nothing when neither a cut nor a
+/// cut's end changed it.
+std::vector<std::vector<glm::dvec3>> conformingPieces(const Face& face, const std::vector<std::vector<glm::dvec3>>& cut,
+                                                      const std::vector<glm::dvec3>& made, double onEdge) {
+    const std::vector<std::vector<glm::dvec3>> polygons = cut.empty() ? std::vector<std::vector<glm::dvec3>>{face.vertices} : cut;
+    std::vector<std::vector<glm::dvec3>> convex;
+    bool changed = !cut.empty();
+    for (const auto& polygon : polygons) {
+        std::vector<glm::dvec3> corners;
+        bool inserted = false;
+        for (std::size_t i = 0; i < polygon.size(); ++i) {
+            const glm::dvec3 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
+            corners.push_back(p);
+            const double length2 = glm::dot(q - p, q - p);
+            if (!(length2 > 0)) continue;
+            std::vector<std::pair<double, glm::dvec3>> onThis;
+            for (const glm::dvec3& x : made) {
+                const double t = glm::dot(x - p, q - p) / length2;
+                if (t * std::sqrt(length2) <= onEdge || (1 - t) * std::sqrt(length2) <= onEdge) continue;
+                if (glm::distance(p + t * (q - p), x) <= onEdge) onThis.emplace_back(t, x);
+            }
+            std::sort(onThis.begin(), onThis.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
+            for (const auto& [t, x] : onThis) {
+                if (glm::distance(corners.back(), x) <= onEdge) continue;
+                corners.push_back(x);
+                inserted = true;
+            }
+        }
+        if (!inserted) {
+            convex.push_back(polygon);
+            continue;
+        }
+        changed = true;
+        glm::dvec3 centre(0.0);
+        for (const glm::dvec3& c : polygon) centre += c;
+        centre /= static_cast<double>(polygon.size());
+        for (std::size_t i = 0; i < corners.size(); ++i) convex.push_back({centre, corners[i], corners[(i + 1) % corners.size()]});
+    }
+    if (!changed) return {};
+    // Each piece from its lowest corner, so the mesher's fan does not depend on where the face's
+    // corner list started.
+    for (auto& polygon : convex)
+        std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end(), lexicographicallyLess), polygon.end());
+    return convex;
+}
+
+} // namespace
+
+ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings) {
+    ContactPolygons result(scene.surfaces.size());
+    for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) result[s].resize(scene.surfaces[s].faces.size());
+    SceneEdges edges = collectEdges(scene);
+    if (!(edges.lo.x <= edges.hi.x)) return result;
+    const double extent = glm::length(edges.hi - edges.lo);
+    if (!(extent > 0) || !std::isfinite(extent)) return result;
+    const ContactTolerances tolerance{kContactPlaneTolerance * extent, kContactSnap * extent, 1e-7 * extent};
+
+    EdgeGrid grid(std::move(edges.edges), edges.lo, extent / 64);
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
         const Surface& surface = scene.surfaces[s];
-        // Lines per face of this surface that some contact cuts.
         std::vector<std::vector<Line>> lines(surface.faces.size());
         bool any = false;
         for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
-            const Face& face = surface.faces[f];
-            if (!usable(face)) continue;
-            glm::dvec3 flo(std::numeric_limits<double>::max()), fhi(std::numeric_limits<double>::lowest());
-            for (const glm::dvec3& v : face.vertices) flo = glm::min(flo, v), fhi = glm::max(fhi, v);
-            grid.near(flo, fhi, [&](const SceneEdge& edge) {
-                if (edge.surface == s && edge.face == f) return;
-                const Face& other = scene.surfaces[edge.surface].faces[edge.face];
-                if (!usable(other) || std::abs(glm::dot(other.normal, face.normal)) > 1 - 1e-6) return;
-                if (std::abs(planeDistance(face, edge.a)) > planeTolerance || std::abs(planeDistance(face, edge.b)) > planeTolerance)
-                    return;
-                // The other face must stand on this face's front (a wall below a floor lights nothing here).
-                double lowest = 0, highest = 0;
-                for (const glm::dvec3& v : other.vertices) {
-                    lowest = std::min(lowest, planeDistance(face, v));
-                    highest = std::max(highest, planeDistance(face, v));
-                }
-                if (lowest < -planeTolerance || highest <= planeTolerance) return;
-                // A small thing's contact snaps at a share of its own size, not the scene's: a chair
-                // leg in a hall still cuts, and lines a leg's width apart stay apart.
-                const double lineSnap = std::min(snap, kContactSnapOfEdge * glm::distance(edge.a, edge.b));
-                if (lengthInside(face.vertices, face.normal, edge.a, edge.b, lineSnap) <= lineSnap) return;
-                // Ordered ends, so the same contact read from a file (floats, another winding) makes the
-                // same line.
-                const bool ordered = lexicographicallyLess(edge.a, edge.b);
-                const glm::dvec3& a = ordered ? edge.a : edge.b;
-                const glm::dvec3& b = ordered ? edge.b : edge.a;
-                lines[f].push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
-                any = true;
-            });
+            lines[f] = contactLinesOfFace(scene, s, f, grid, tolerance);
+            any |= !lines[f].empty();
         }
         if (!any) continue;
 
-        // Every face of the surface in the plane of a cut face takes the cut face's lines.
-        std::vector<std::vector<Line>> applied(surface.faces.size());
-        for (std::uint32_t f = 0; f < surface.faces.size(); ++f) {
-            if (lines[f].empty()) continue;
-            const Face& face = surface.faces[f];
-            for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
-                const Face& other = surface.faces[g];
-                if (!usable(other) || glm::dot(other.normal, face.normal) < 1 - 1e-6) continue;
-                bool coplanar = true;
-                for (const glm::dvec3& v : other.vertices) coplanar &= std::abs(planeDistance(face, v)) <= planeTolerance;
-                if (coplanar) applied[g].insert(applied[g].end(), lines[f].begin(), lines[f].end());
-            }
-        }
-        // Snapping makes the pieces depend on the order of the cuts: a fixed one, not the grid's (the
-        // two edges leaving a footprint's corner share its point, so the direction breaks the tie).
-        // A contact found from two faces of the plane (a floor stored as two triangles) cuts once.
-        for (auto& faceLines : applied) {
-            std::sort(faceLines.begin(), faceLines.end(), [](const Line& l, const Line& r) {
-                return l.point != r.point ? lexicographicallyLess(l.point, r.point) : lexicographicallyLess(l.across, r.across);
-            });
-            faceLines.erase(std::unique(faceLines.begin(), faceLines.end(),
-                                        [](const Line& l, const Line& r) {
-                                            return glm::distance(l.point, r.point) <= std::min(l.snap, r.snap) &&
-                                                   glm::dot(l.across, r.across) > kSameDirection;
-                                        }),
-                            faceLines.end());
-        }
-        // Each line cuts every piece of the plane it crosses (ContactCuts.h: why not only the pieces its
-        // contact segment crosses).
-        std::vector<glm::dvec3> made;
-        std::vector<std::vector<std::vector<glm::dvec3>>> pieces(surface.faces.size());
-        std::size_t piecesSoFar = 0, linesApplied = 0;
-        bool overBudget = false;
-        for (std::uint32_t g = 0; g < surface.faces.size() && !overBudget; ++g) {
-            if (applied[g].empty()) continue;
-            linesApplied += applied[g].size();
-            std::vector<std::vector<glm::dvec3>> polygons{surface.faces[g].vertices}, next;
-            std::vector<glm::dvec3> front, back;
-            for (const Line& line : applied[g]) {
-                next.clear();
-                for (auto& polygon : polygons) {
-                    if (split(polygon, line, front, back, made)) {
-                        next.push_back(front);
-                        next.push_back(back);
-                    } else {
-                        next.push_back(std::move(polygon));
-                    }
-                }
-                std::swap(polygons, next);
-                if (piecesSoFar + polygons.size() > kMostContactPieces) {
-                    overBudget = true;
-                    break;
-                }
-            }
-            piecesSoFar += polygons.size();
-            if (polygons.size() > 1) pieces[g] = std::move(polygons);
-        }
-        if (overBudget) {
-            // Whole lines across a crowded plane multiply (n lines in general position: about n^2 / 2
-            // pieces; 30 turned desks on a floor hung the load for minutes): the surface is meshed as
-            // if nothing stood on it, and the user is told.
+        const SurfacePieces cut = cutByLines(surface, spreadOverPlanes(surface, lines, tolerance.plane));
+        if (cut.overBudget) {
+            // The surface is meshed as if nothing stood on it, and the user is told.
             if (warnings)
-                warnings->push_back(scene.name + ": surface '" + surface.name + "': the " + std::to_string(linesApplied) +
+                warnings->push_back(scene.name + ": surface '" + surface.name + "': the " + std::to_string(cut.linesApplied) +
                                     " edges standing on it would cut it into more than " +
                                     std::to_string(kMostContactPieces) +
                                     " pieces; it is meshed uncut, so its patches along what stands on it may lie "
                                     "partly under it and read darker there");
             continue;
         }
-
-        // A cut ends on an edge that a face beside it keeps whole (a face of the surface out of the
-        // plane): that edge takes the cut's end as a corner, so the surface stays conforming. Such a polygon has corners on a straight side, which
-        // a fan from a corner would turn into flat triangles; it is fanned from its centre instead.
-        const double onEdge = 1e-7 * extent;
-        for (std::uint32_t g = 0; g < surface.faces.size(); ++g) {
-            if (!usable(surface.faces[g])) continue;
-            std::vector<std::vector<glm::dvec3>> polygons =
-                pieces[g].empty() ? std::vector<std::vector<glm::dvec3>>{surface.faces[g].vertices} : pieces[g];
-            std::vector<std::vector<glm::dvec3>> convex;
-            bool changed = !pieces[g].empty();
-            for (const auto& polygon : polygons) {
-                std::vector<glm::dvec3> corners;
-                bool inserted = false;
-                for (std::size_t i = 0; i < polygon.size(); ++i) {
-                    const glm::dvec3 p = polygon[i], q = polygon[(i + 1) % polygon.size()];
-                    corners.push_back(p);
-                    const double length2 = glm::dot(q - p, q - p);
-                    if (!(length2 > 0)) continue;
-                    std::vector<std::pair<double, glm::dvec3>> onThis;
-                    for (const glm::dvec3& x : made) {
-                        const double t = glm::dot(x - p, q - p) / length2;
-                        if (t * std::sqrt(length2) <= onEdge || (1 - t) * std::sqrt(length2) <= onEdge) continue;
-                        if (glm::distance(p + t * (q - p), x) <= onEdge) onThis.emplace_back(t, x);
-                    }
-                    std::sort(onThis.begin(), onThis.end(), [](const auto& l, const auto& r) { return l.first < r.first; });
-                    for (const auto& [t, x] : onThis) {
-                        if (glm::distance(corners.back(), x) <= onEdge) continue;
-                        corners.push_back(x);
-                        inserted = true;
-                    }
-                }
-                if (!inserted) {
-                    convex.push_back(polygon);
-                    continue;
-                }
-                changed = true;
-                glm::dvec3 centre(0.0);
-                for (const glm::dvec3& c : polygon) centre += c;
-                centre /= static_cast<double>(polygon.size());
-                for (std::size_t i = 0; i < corners.size(); ++i) convex.push_back({centre, corners[i], corners[(i + 1) % corners.size()]});
-            }
-            // Each piece from its lowest corner, so the mesher's fan does not depend on where the face's
-            // corner list started.
-            for (auto& polygon : convex)
-                std::rotate(polygon.begin(), std::min_element(polygon.begin(), polygon.end(), lexicographicallyLess), polygon.end());
-            if (changed) result[s][g] = std::move(convex);
-        }
+        for (std::uint32_t g = 0; g < surface.faces.size(); ++g)
+            if (usable(surface.faces[g])) result[s][g] = conformingPieces(surface.faces[g], cut.pieces[g], cut.made, tolerance.onEdge);
     }
     return result;
 }
