@@ -8,6 +8,7 @@
 #include <string>
 
 #include "app/ui/HorizontalColourBar.h"
+#include "app/ui/LegendUnit.h"
 
 namespace radiant::app {
 namespace {

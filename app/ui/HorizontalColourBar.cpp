@@ -1,6 +1,5 @@
 #include "app/ui/HorizontalColourBar.h"
 
-#include <cstring>
 #include <string>
 
 namespace radiant::app {
@@ -30,11 +29,6 @@ void drawHorizontalColourBar(const HorizontalColourBar& bar, const std::function
         draw->AddText(ImVec2(left, bar.hi.y + font * 0.35f), text, label.c_str());
         lastLabelEnd = left + labelWidth;
     }
-}
-
-const char* legendUnitForScreen(const render::ColourLegend& legend) {
-    // The PNG legend's bitmap font has no superscript; the UI font does.
-    return std::strcmp(legend.unit, render::kFalseColourUnit) == 0 ? "W/m\xC2\xB2" : legend.unit;
 }
 
 } // namespace radiant::app

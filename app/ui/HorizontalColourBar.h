@@ -21,7 +21,4 @@ struct HorizontalColourBar {
 void drawHorizontalColourBar(const HorizontalColourBar& bar, const std::function<ImU32(double)>& colourAt,
                              const render::ColourLegend& ticks);
 
-/// The legend's unit as the UI font writes it: "W/m²" for the radiometric default, else as given.
-const char* legendUnitForScreen(const render::ColourLegend& legend);
-
 } // namespace radiant::app
