@@ -19,24 +19,26 @@ struct Line {
     double snap = 0;  ///< m: corners this close to the line are on it (ContactCuts.h: kContactSnap)
 };
 
-struct SceneEdge {
-    glm::dvec3 a{0.0}, b{0.0};
+/// A face's bounding box, for the grid.
+struct FaceBox {
+    glm::dvec3 lo{0.0}, hi{0.0};
     std::uint32_t surface = 0, face = 0;
 };
 
-/// Edges of all faces in a uniform grid of cells, so a face only tests the edges near it.
-class EdgeGrid {
+/// Faces in a uniform grid of cells by their bounding boxes, so a face only tests the faces near it;
+/// a face over too many cells (a floor) is tested by every query.
+class FaceGrid {
 public:
-    EdgeGrid(std::vector<SceneEdge> edges, glm::dvec3 lo, double cell) : edges_(std::move(edges)), lo_(lo), cell_(cell) {
-        for (std::uint32_t e = 0; e < edges_.size(); ++e) {
-            const Box box = boxOf(glm::min(edges_[e].a, edges_[e].b), glm::max(edges_[e].a, edges_[e].b));
+    FaceGrid(std::vector<FaceBox> faces, glm::dvec3 lo, double cell) : faces_(std::move(faces)), lo_(lo), cell_(cell) {
+        for (std::uint32_t e = 0; e < faces_.size(); ++e) {
+            const Box box = boxOf(faces_[e].lo, faces_[e].hi);
             if (box.cells() > kMaxCells) {
                 wide_.push_back(e);
                 continue;
             }
             forEach(box, [&](std::uint64_t key) { cells_[key].push_back(e); });
         }
-        seen_.assign(edges_.size(), 0);
+        seen_.assign(faces_.size(), 0);
     }
 
     template <class Visit>
@@ -45,12 +47,12 @@ public:
         const auto once = [&](std::uint32_t e) {
             if (seen_[e] == stamp_) return;
             seen_[e] = stamp_;
-            visit(edges_[e]);
+            visit(faces_[e]);
         };
         for (std::uint32_t e : wide_) once(e);
         const Box box = boxOf(lo, hi);
         if (box.cells() > kMaxCells) {
-            for (std::uint32_t e = 0; e < edges_.size(); ++e) once(e);
+            for (std::uint32_t e = 0; e < faces_.size(); ++e) once(e);
             return;
         }
         forEach(box, [&](std::uint64_t key) {
@@ -83,7 +85,7 @@ private:
                          static_cast<std::uint64_t>(z) * 0x165667B19E3779F9ull);
     }
 
-    std::vector<SceneEdge> edges_;
+    std::vector<FaceBox> faces_;
     glm::dvec3 lo_;
     double cell_;
     std::unordered_map<std::uint64_t, std::vector<std::uint32_t>> cells_;
@@ -147,31 +149,53 @@ bool split(const std::vector<glm::dvec3>& polygon, const Line& line, std::vector
     return front.size() >= 3 && back.size() >= 3;
 }
 
-/// Every edge of every finite face, with the scene's bounds.
-struct SceneEdges {
-    std::vector<SceneEdge> edges;
+/// Every finite face's box, with the scene's bounds.
+struct SceneFaces {
+    std::vector<FaceBox> faces;
     glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{std::numeric_limits<double>::lowest()};
 };
 
-SceneEdges collectEdges(const Scene& scene) {
-    SceneEdges result;
+SceneFaces collectFaces(const Scene& scene) {
+    SceneFaces result;
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
         for (std::uint32_t f = 0; f < scene.surfaces[s].faces.size(); ++f) {
             const auto& v = scene.surfaces[s].faces[f].vertices;
-            bool finite = true;
+            bool finite = !v.empty();
             for (const glm::dvec3& p : v) finite &= std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
             if (!finite) continue;  // refused by the mesher, with its name
-            for (std::size_t i = 0; i < v.size(); ++i) {
-                result.lo = glm::min(result.lo, v[i]);
-                result.hi = glm::max(result.hi, v[i]);
-                result.edges.push_back({v[i], v[(i + 1) % v.size()], s, f});
-            }
+            FaceBox box{v[0], v[0], s, f};
+            for (const glm::dvec3& p : v) box.lo = glm::min(box.lo, p), box.hi = glm::max(box.hi, p);
+            result.lo = glm::min(result.lo, box.lo);
+            result.hi = glm::max(result.hi, box.hi);
+            result.faces.push_back(box);
         }
     }
     return result;
 }
 
 bool usable(const Face& face) { return face.vertices.size() >= 3 && face.area > 0 && std::isfinite(face.area); }
+
+/// Where the convex face `crossing` passes through the plane of `face`: the segment a-b between its
+/// two edges that cross it. False when it only touches the plane.
+bool crossingOfPlane(const Face& crossing, const Face& face, glm::dvec3& a, glm::dvec3& b) {
+    const auto& v = crossing.vertices;
+    std::vector<glm::dvec3> points;
+    for (std::size_t i = 0; i < v.size() && points.size() < 2; ++i) {
+        const glm::dvec3 &p = v[i], &q = v[(i + 1) % v.size()];
+        const double dp = planeDistance(face, p), dq = planeDistance(face, q);
+        if ((dp < 0) == (dq < 0) || dp == dq) continue;
+        // From the endpoints in one order, so both faces sharing the edge compute the same point.
+        const bool ordered = lexicographicallyLess(p, q);
+        const glm::dvec3& from = ordered ? p : q;
+        const glm::dvec3& to = ordered ? q : p;
+        const double dFrom = ordered ? dp : dq, dTo = ordered ? dq : dp;
+        points.push_back(from + (dFrom / (dFrom - dTo)) * (to - from));
+    }
+    if (points.size() < 2) return false;
+    a = points[0];
+    b = points[1];
+    return glm::distance(a, b) > 0;
+}
 
 /// Tolerances of one scene, from its diagonal (ContactCuts.h).
 struct ContactTolerances {
@@ -182,36 +206,51 @@ struct ContactTolerances {
 
 /// The lines that contacts cut face f of surface s along (several per contact when found from
 /// several sides; they are merged once spread over the plane).
-std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::uint32_t f, EdgeGrid& grid,
+std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::uint32_t f, FaceGrid& grid,
                                      const ContactTolerances& tolerance) {
     std::vector<Line> lines;
     const Face& face = scene.surfaces[s].faces[f];
     if (!usable(face)) return lines;
+    const auto addContact = [&](const glm::dvec3& from, const glm::dvec3& to) {
+        // A small thing's contact snaps at a share of its own size, not the scene's: a chair
+        // leg in a hall still cuts, and lines a leg's width apart stay apart.
+        const double lineSnap = std::min(tolerance.snap, kContactSnapOfEdge * glm::distance(from, to));
+        if (lengthInside(face.vertices, face.normal, from, to, lineSnap) <= lineSnap) return;
+        // Ordered ends, so the same contact read from a file (floats, another winding) makes the
+        // same line.
+        const bool ordered = lexicographicallyLess(from, to);
+        const glm::dvec3& a = ordered ? from : to;
+        const glm::dvec3& b = ordered ? to : from;
+        lines.push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
+    };
     glm::dvec3 flo(std::numeric_limits<double>::max()), fhi(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& v : face.vertices) flo = glm::min(flo, v), fhi = glm::max(fhi, v);
-    grid.near(flo, fhi, [&](const SceneEdge& edge) {
-        if (edge.surface == s && edge.face == f) return;
-        const Face& other = scene.surfaces[edge.surface].faces[edge.face];
+    grid.near(flo, fhi, [&](const FaceBox& near) {
+        if (near.surface == s && near.face == f) return;
+        const Face& other = scene.surfaces[near.surface].faces[near.face];
         if (!usable(other) || std::abs(glm::dot(other.normal, face.normal)) > 1 - 1e-6) return;
-        if (std::abs(planeDistance(face, edge.a)) > tolerance.plane || std::abs(planeDistance(face, edge.b)) > tolerance.plane)
-            return;
-        // The other face must stand on this face's front (a wall below a floor lights nothing here).
         double lowest = 0, highest = 0;
         for (const glm::dvec3& v : other.vertices) {
             lowest = std::min(lowest, planeDistance(face, v));
             highest = std::max(highest, planeDistance(face, v));
         }
+        if (lowest < -tolerance.plane && highest > tolerance.plane) {
+            // A face through the plane (a box sunk into the floor, as Blender users place them; the
+            // floor through the box's sides): its part in front stands on this face along the line
+            // where it crosses the plane.
+            glm::dvec3 a, b;
+            if (crossingOfPlane(other, face, a, b)) addContact(a, b);
+            return;
+        }
+        // Otherwise it must stand on this face's front, on an edge of its own lying in the plane (a
+        // wall below a floor lights nothing here).
         if (lowest < -tolerance.plane || highest <= tolerance.plane) return;
-        // A small thing's contact snaps at a share of its own size, not the scene's: a chair
-        // leg in a hall still cuts, and lines a leg's width apart stay apart.
-        const double lineSnap = std::min(tolerance.snap, kContactSnapOfEdge * glm::distance(edge.a, edge.b));
-        if (lengthInside(face.vertices, face.normal, edge.a, edge.b, lineSnap) <= lineSnap) return;
-        // Ordered ends, so the same contact read from a file (floats, another winding) makes the
-        // same line.
-        const bool ordered = lexicographicallyLess(edge.a, edge.b);
-        const glm::dvec3& a = ordered ? edge.a : edge.b;
-        const glm::dvec3& b = ordered ? edge.b : edge.a;
-        lines.push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
+        const auto& v = other.vertices;
+        for (std::size_t i = 0; i < v.size(); ++i) {
+            const glm::dvec3 &a = v[i], &b = v[(i + 1) % v.size()];
+            if (std::abs(planeDistance(face, a)) <= tolerance.plane && std::abs(planeDistance(face, b)) <= tolerance.plane)
+                addContact(a, b);
+        }
     });
     return lines;
 }
@@ -347,13 +386,13 @@ std::vector<std::vector<glm::dvec3>> conformingPieces(const Face& face, const st
 ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings) {
     ContactPolygons result(scene.surfaces.size());
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) result[s].resize(scene.surfaces[s].faces.size());
-    SceneEdges edges = collectEdges(scene);
-    if (!(edges.lo.x <= edges.hi.x)) return result;
-    const double extent = glm::length(edges.hi - edges.lo);
+    SceneFaces faces = collectFaces(scene);
+    if (!(faces.lo.x <= faces.hi.x)) return result;
+    const double extent = glm::length(faces.hi - faces.lo);
     if (!(extent > 0) || !std::isfinite(extent)) return result;
     const ContactTolerances tolerance{kContactPlaneTolerance * extent, kContactSnap * extent, 1e-7 * extent};
 
-    EdgeGrid grid(std::move(edges.edges), edges.lo, extent / 64);
+    FaceGrid grid(std::move(faces.faces), faces.lo, extent / 64);
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) {
         const Surface& surface = scene.surfaces[s];
         std::vector<std::vector<Line>> lines(surface.faces.size());

@@ -7,7 +7,9 @@
 //
 // A contact is an edge of a face not parallel to this one, lying in this face's plane (within a
 // tolerance relative to the scene's size) with a part inside the face, whose face stands on this
-// face's front (a lid lying face down, a double-sided twin or a wall below the floor is none). The
+// face's front (a lid lying face down, a double-sided twin or a wall below the floor is none); or the
+// line where a face passes through this face's plane, with a part inside it (a box sunk into a
+// floor cuts the floor along its footprint, and the floor cuts the box's sides where they cross). The
 // contact's whole line cuts, in turn, every convex piece of the faces of the surface in that plane:
 // a line leaves two convex pieces of a convex one, and a line that crosses an edge two pieces share
 // cuts both. Cutting only the pieces the contact segment crosses was tried: the cuts then ended on
