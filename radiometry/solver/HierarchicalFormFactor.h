@@ -9,8 +9,11 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <numbers>
+#include <span>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "radiometry/geometry/RayCaster.h"
@@ -309,6 +312,103 @@ inline bool facing(const PatchPolygon& a, const PatchPolygon& b) {
     };
     return someInFront(a, b) && someInFront(b, a);
 }
+
+/// The shaft between two polygons a and b, their convex hull (Haines, Wallace, "Shaft culling for
+/// efficient ray-cast radiosity", Eurographics Workshop on Rendering 1991, with the hull's own planes
+/// instead of its boxes): its bounding box and the planes that have the whole hull on their inner
+/// side, found among a's and b's planes and the planes through an edge of one polygon and a corner
+/// of the other (every side of the hull is one of them).
+class Shaft {
+public:
+    Shaft(const PatchPolygon& a, const PatchPolygon& b, double tolerance) : tolerance_(tolerance) {
+        for (const glm::dvec3& v : a.corners()) hull_[hullCount_++] = v;
+        for (const glm::dvec3& v : b.corners()) hull_[hullCount_++] = v;
+        low_ = high_ = hull_[0];
+        for (std::size_t i = 1; i < hullCount_; ++i) {
+            low_ = glm::min(low_, hull_[i]);
+            high_ = glm::max(high_, hull_[i]);
+        }
+        addPlane(a.normal, a.centroid);
+        addPlane(b.normal, b.centroid);
+        const auto sides = [&](const PatchPolygon& edges, const PatchPolygon& corners) {
+            for (int i = 0; i < edges.count; ++i) {
+                const glm::dvec3& p0 = edges.vertices[static_cast<std::size_t>(i)];
+                const glm::dvec3 edge = edges.vertices[static_cast<std::size_t>((i + 1) % edges.count)] - p0;
+                for (const glm::dvec3& v : corners.corners()) addPlane(glm::cross(edge, v - p0), p0);
+            }
+        };
+        sides(a, b);
+        sides(b, a);
+    }
+
+    /// True when a plane separates the shaft from the convex polygon with corners `t`, so no segment
+    /// from a point of a to a point of b meets it: the boxes' axes, t's own plane, or one of the
+    /// hull's planes. False when none does, which is always safe: the caller then casts rays.
+    /// Touching within the tolerance (m) counts as separated: segments grazing t's edge or plane are
+    /// a measure-zero set of the pair's segments.
+    [[nodiscard]] bool separates(std::span<const glm::dvec3> t) const {
+        glm::dvec3 low = t[0], high = t[0];
+        for (const glm::dvec3& v : t) {
+            low = glm::min(low, v);
+            high = glm::max(high, v);
+        }
+        for (int axis = 0; axis < 3; ++axis)
+            if (low[axis] > high_[axis] + tolerance_ || high[axis] < low_[axis] - tolerance_) return true;
+        for (std::size_t k = 0; k < planeCount_; ++k) {
+            double farthest = -std::numeric_limits<double>::infinity();
+            for (const glm::dvec3& v : t) farthest = std::max(farthest, glm::dot(normals_[k], v) - offsets_[k]);
+            if (farthest <= tolerance_) return true;
+        }
+        // t's own plane (Newell's normal: any convex polygon, any winding), with t's corners on it.
+        glm::dvec3 n(0.0);
+        for (std::size_t i = 0; i < t.size(); ++i) n += glm::cross(t[i], t[(i + 1) % t.size()]);
+        const double length = glm::length(n);
+        if (!(length > 0)) return false;
+        n /= length;
+        double tLow = std::numeric_limits<double>::infinity(), tHigh = -tLow;
+        for (const glm::dvec3& v : t) {
+            tLow = std::min(tLow, glm::dot(n, v - t[0]));
+            tHigh = std::max(tHigh, glm::dot(n, v - t[0]));
+        }
+        double hullLow = std::numeric_limits<double>::infinity(), hullHigh = -hullLow;
+        for (std::size_t i = 0; i < hullCount_; ++i) {
+            hullLow = std::min(hullLow, glm::dot(n, hull_[i] - t[0]));
+            hullHigh = std::max(hullHigh, glm::dot(n, hull_[i] - t[0]));
+        }
+        return (hullLow >= -tolerance_ && tHigh <= tolerance_) || (hullHigh <= tolerance_ && tLow >= -tolerance_);
+    }
+
+private:
+    /// Keeps the plane through `origin` with normal +-n when the whole hull lies on one side of it
+    /// (within the tolerance), oriented so that the hull is on its positive side.
+    void addPlane(const glm::dvec3& n, const glm::dvec3& origin) {
+        const double length = glm::length(n);
+        if (!(length > 0)) return;
+        const glm::dvec3 unit = n / length;
+        double hullLow = std::numeric_limits<double>::infinity(), hullHigh = -hullLow;
+        for (std::size_t i = 0; i < hullCount_; ++i) {
+            const double d = glm::dot(unit, hull_[i] - origin);
+            hullLow = std::min(hullLow, d);
+            hullHigh = std::max(hullHigh, d);
+        }
+        if (hullLow >= -tolerance_) {
+            normals_[planeCount_] = unit;
+            offsets_[planeCount_++] = glm::dot(unit, origin);
+        } else if (hullHigh <= tolerance_) {
+            normals_[planeCount_] = -unit;
+            offsets_[planeCount_++] = -glm::dot(unit, origin);
+        }
+    }
+
+    double tolerance_;
+    std::array<glm::dvec3, 8> hull_{};
+    std::size_t hullCount_ = 0;
+    glm::dvec3 low_{0.0}, high_{0.0};
+    // Inner side: dot(normal, x) - offset >= 0. At most a's, b's and 2 x 4 x 4 sides.
+    std::array<glm::dvec3, 34> normals_{};
+    std::array<double, 34> offsets_{};
+    std::size_t planeCount_ = 0;
+};
 
 /// SplitMix64: a deterministic, well-mixed hash for the stratified jitter.
 inline std::uint64_t mix(std::uint64_t z) {

@@ -7,6 +7,7 @@
 // (Gortler, Schroeder, Cohen, Hanrahan, "Wavelet radiosity", SIGGRAPH 1993), so the value at a point
 // follows the kernel's variation across a leaf, most of all near contact and under the light.
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numbers>
 #include <unordered_map>
@@ -76,10 +77,9 @@ double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
 
 } // namespace
 
-template <class Visibility>
-void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility,
-                                       bool everyLink, bool exact, std::vector<GatherTerm>& out) const {
-    const glm::dvec3& n = tree_.polygon(leaf).normal;
+template <class Faces, class Kernel, class Visibility>
+void HierarchicalSolver::gatherTerms(ElementIndex leaf, const glm::dvec3& x, Faces&& faces, Kernel&& kernel,
+                                     Visibility&& visibility, bool everyLink, std::vector<GatherTerm>& out) const {
     const auto& radiosity = tree_.radiosity();
     // A link all of whose rays were blocked may still light part of x's leaf (4 rays all miss a
     // visible fraction v with chance (1 - v)^4): where its source could bring x more than
@@ -94,14 +94,14 @@ void HierarchicalSolver::gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, d
         for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
             const std::uint32_t i = receiverLinks_[k];
             if (!everyLink && links_[i].formFactor <= 0 && !links_[i].partiallyVisible() && !brightHidden(links_[i])) continue;
-            if (!mayFace(x, n, tree_.polygon(links_[i].source))) continue;
-            expandSource(i, links_[i].source, x, n, weight, visibility, exact, out);
+            if (!faces(tree_.polygon(links_[i].source))) continue;
+            expandSource(i, links_[i].source, x, kernel, visibility, out);
         }
 }
 
-template <class Visibility>
-void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, const glm::dvec3& n,
-                                      double weight, Visibility& visibility, bool exact, std::vector<GatherTerm>& out) const {
+template <class Kernel, class Visibility>
+void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, Kernel& kernel,
+                                      Visibility& visibility, std::vector<GatherTerm>& out) const {
     // A source large for its distance from x is read through its children: its radiosity varies
     // across it (bright under the light, dark in a corner) where x's kernel varies too, and the
     // product's mean is not the means' product. So does its visibility, and with the radiosity: the
@@ -111,16 +111,30 @@ void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, c
     const glm::dvec3 d = q.centroid - x;
     if (!tree_.isLeaf(source) && q.area > kSourceExpansion * glm::dot(d, d)) {
         const ElementIndex first = tree_.firstChild(source);
-        for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(link, c, x, n, weight, visibility, exact, out);
+        for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(link, c, x, kernel, visibility, out);
         return;
     }
-    const double f = kernelAt(x, n, q, exact);
+    const double f = kernel(q);
     if (f <= 0) return;
     const double v = visibility(link, source, q);
-    if (v > 0) out.push_back({source, static_cast<float>(weight * f * v)});
+    if (v > 0) out.push_back({source, static_cast<float>(f * v)});
+}
+
+bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
+    if (occluderBegin_.empty()) return false;
+    std::atomic_ref<std::uint8_t> known(linkShaft_[link]);
+    const std::uint8_t state = known.load(std::memory_order_relaxed);
+    if (state != 0) return state == 1;
+    const hierarchical::Shaft shaft(tree_.polygon(links_[link].receiver), tree_.polygon(links_[link].source), shaftTolerance_);
+    bool clear = true;
+    for (std::size_t k = 0; clear && k + 1 < occluderBegin_.size(); ++k)
+        clear = shaft.separates({occluderCorners_.data() + occluderBegin_[k], occluderBegin_[k + 1] - occluderBegin_[k]});
+    known.store(clear ? 1 : 2, std::memory_order_relaxed);  // two threads may both test it: the same answer
+    return clear;
 }
 
 void HierarchicalSolver::buildPatchRows() {
+    linkShaft_.assign(occluderBegin_.empty() ? 0 : links_.size(), 0);
     std::vector<std::vector<GatherTerm>> rows(patches_.size());
     const auto& radiosity = tree_.radiosity();
     parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
@@ -133,6 +147,14 @@ void HierarchicalSolver::buildPatchRows() {
         // (rays per patch point would make the display noisy; the probe's point casts its own).
         std::unordered_map<std::uint64_t, double> termVisibility;
         const PatchPolygon* patchPolygon = nullptr;
+        // The deepest element that holds the whole patch, and whether `e` is it or one of its ancestors.
+        ElementIndex home = kNoElement;
+        const auto holds = [&](ElementIndex e) {
+            if (home == kNoElement || tree_.depth(e) > tree_.depth(home)) return false;
+            ElementIndex a = home;
+            while (tree_.depth(a) > tree_.depth(e)) a = tree_.parent(a);
+            return a == e;
+        };
         std::uint64_t patchSeed = 0;
         double patchIrradiance = 0;
         // A source that brings the patch much of its light (the lamp's pieces) is seen through the
@@ -150,6 +172,11 @@ void HierarchicalSolver::buildPatchRows() {
                              tree_.area(links_[link].receiver) <= kLargeReceiver * patchPolygon->area;
             const bool lamp = bright(term, q);
             if (caster_ == nullptr || (own && !lamp)) return static_cast<double>(linkShare_[link]);
+            // No face can block a segment between the link's receiver (which holds the patch) and its
+            // source (which holds the term): the patch sees all of the term, no ray needed.
+            if (!partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 && holds(links_[link].receiver) &&
+                shaftClear(link))
+                return 1.0;
             // Rays from the patch to the term: the same whichever link of the patch's points asked.
             const std::uint64_t key = term;
             const auto [entry, inserted] = termVisibility.try_emplace(key, 0.0);
@@ -167,12 +194,54 @@ void HierarchicalSolver::buildPatchRows() {
             // patch (their links say the irradiance varies within it), 2 x 2 elsewhere.
             const ElementIndex atCentroid = tree_.locate(patch.surface, patch.face, patch.centroid);
             patchIrradiance = atCentroid < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[atCentroid]) : 0.0;
+            home = atCentroid;
+            const auto holdsPatch = [&](ElementIndex e) {
+                for (const glm::dvec3& corner : patch.polygon.corners())
+                    if (!tree_.contains(e, corner)) return false;
+                return true;
+            };
+            while (home != kNoElement && !holdsPatch(home)) home = tree_.parent(home);
             const int order = atCentroid != kNoElement && 4 * tree_.area(atCentroid) < patch.area ? 3 : 2;
+            std::array<glm::dvec3, 4> points{};
+            std::array<double, 4> weights{};
+            std::size_t pointCount = 0;
+            ElementIndex commonLeaf = kNoElement;
+            if (order == 2 && patch.polygon.count >= 3) {
+                hierarchical::forGaussPoints(patch.polygon, 2, [&](const glm::dvec3& x, double weight) {
+                    points[pointCount] = x;
+                    weights[pointCount++] = weight;
+                });
+                for (std::size_t i = 0; i < pointCount; ++i) {
+                    const ElementIndex leaf = tree_.locate(patch.surface, patch.face, points[i]);
+                    commonLeaf = i == 0 || leaf == commonLeaf ? leaf : kNoElement;
+                }
+            }
+            const bool wholePatch = pointCount == 4 && commonLeaf != kNoElement;
+            if (wholePatch) {
+                const PatchPolygon& P = patch.polygon;
+                const glm::dvec3& n = tree_.polygon(commonLeaf).normal;
+                const auto faces = [&](const PatchPolygon& q) {
+                    bool inFront = false, above = false;
+                    for (const glm::dvec3& v : P.corners()) inFront = inFront || glm::dot(q.normal, v - q.centroid) > 0;
+                    for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
+                    return inFront && above;
+                };
+                const auto kernel = [&](const PatchPolygon& q) {
+                    double f = 0;
+                    for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, false);
+                    return f;
+                };
+                gatherTerms(commonLeaf, P.centroid, faces, kernel, visibility, false, row);
+            }
             const auto gatherAt = [&](const glm::dvec3& x, double weight) {
                 const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
-                if (leaf != kNoElement) gatherTermsAt(leaf, x, weight, visibility, false, false, row);
+                if (leaf == kNoElement) return;
+                const glm::dvec3& n = tree_.polygon(leaf).normal;
+                gatherTerms(
+                    leaf, x, [&](const PatchPolygon& q) { return mayFace(x, n, q); },
+                    [&](const PatchPolygon& q) { return weight * kernelAt(x, n, q, false); }, visibility, false, row);
             };
-            if (patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
+            if (!wholePatch && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
             std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
             std::size_t kept = 0;
             for (const GatherTerm& term : row) {
@@ -217,7 +286,10 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
         return hierarchical::pointVisibility(x, element.normal, q, *caster_, kPointVisibilityRaysPerSide,
                                              hierarchical::mix(options_.seed ^ link) ^ hierarchical::mix(term));
     };
-    gatherTermsAt(leaf, x, 1.0, rays, caster_ != nullptr, true, terms);
+    gatherTerms(
+        leaf, x, [&](const PatchPolygon& q) { return mayFace(x, element.normal, q); },
+        [&](const PatchPolygon& q) { return hierarchical::pointToElementFormFactor(x, element.normal, q); }, rays,
+        caster_ != nullptr, terms);
     Rgb irradiance(0.0);
     for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
     if (lighting_) irradiance += lighting_->at(x, element.normal).value();

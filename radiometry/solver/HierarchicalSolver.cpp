@@ -49,6 +49,23 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     if (visibilityRays_ > 0) caster_ = sceneRays_;
     if (!scene.lights.empty()) lighting_ = std::make_unique<DirectLighting>(scene, sceneRays_.get());
 
+    std::size_t faceCount = 0;
+    for (const Surface& surface : scene.surfaces) faceCount += surface.faces.size();
+    if (caster_ && faceCount <= kMaxShaftOccluders) {
+        glm::dvec3 low(std::numeric_limits<double>::infinity()), high(-std::numeric_limits<double>::infinity());
+        occluderBegin_.push_back(0);
+        for (const Surface& surface : scene.surfaces)
+            for (const Face& face : surface.faces) {
+                for (const glm::dvec3& v : face.vertices) {
+                    occluderCorners_.push_back(v);
+                    low = glm::min(low, v);
+                    high = glm::max(high, v);
+                }
+                occluderBegin_.push_back(static_cast<std::uint32_t>(occluderCorners_.size()));
+            }
+        shaftTolerance_ = 1e-7 * glm::length(high - low);
+    }
+
     patches_.reserve(mesh.patches.size());
     for (std::size_t i = 0; i < mesh.patches.size(); ++i) {
         const Patch& patch = mesh.patches[i];
@@ -441,7 +458,8 @@ std::size_t HierarchicalSolver::bytes() const {
            patches_.capacity() * sizeof(PatchSample) + solution_.capacity() * sizeof(Rgb) + perThread +
            (receiverLinkBegin_.capacity() + receiverLinks_.capacity()) * sizeof(std::uint32_t) +
            patchRowBegin_.capacity() * sizeof(std::size_t) +
-           patchRows_.capacity() * sizeof(GatherTerm);
+           patchRows_.capacity() * sizeof(GatherTerm) + occluderCorners_.capacity() * sizeof(glm::dvec3) +
+           occluderBegin_.capacity() * sizeof(std::uint32_t) + linkShaft_.capacity();
 }
 
 std::size_t HierarchicalSolver::raysCast() const {

@@ -162,18 +162,20 @@ private:
     };
     /// Links grouped by receiver (HierarchicalGather.cpp).
     void indexLinksByReceiver();
-    /// Appends weight x F(x -> q) x visibility for every link of `leaf` and its ancestors (`everyLink`:
-    /// also those whose rays found them hidden; `exact`: Lambert's kernel even where the far field
-    /// would do).
-    template <class Visibility>
-    void gatherTermsAt(ElementIndex leaf, const glm::dvec3& x, double weight, Visibility&& visibility, bool everyLink,
-                       bool exact, std::vector<GatherTerm>& out) const;
-    /// Appends weight x F(x -> source) x visibility(link, source, its polygon), or the same for the
-    /// source's children where it is large for its distance from x (area over squared distance above
+    /// Appends kernel(q) x visibility for every link of `leaf` and its ancestors (`everyLink`: also
+    /// those whose rays found them hidden), q each link's source or, where that is large for its
+    /// distance from `x`, its descendants (expandSource). `faces(q)`: whether the receiving point or
+    /// patch may see any of q's front (a cheap test before the kernel); `kernel(q)`: the weighted
+    /// form factor from the point or patch to q.
+    template <class Faces, class Kernel, class Visibility>
+    void gatherTerms(ElementIndex leaf, const glm::dvec3& x, Faces&& faces, Kernel&& kernel, Visibility&& visibility,
+                     bool everyLink, std::vector<GatherTerm>& out) const;
+    /// Appends kernel(source) x visibility(link, source, its polygon), or the same for the source's
+    /// children where it is large for its distance from x (area over squared distance above
     /// kSourceExpansion).
-    template <class Visibility>
-    void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, const glm::dvec3& n, double weight,
-                      Visibility& visibility, bool exact, std::vector<GatherTerm>& out) const;
+    template <class Kernel, class Visibility>
+    void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, Kernel& kernel, Visibility& visibility,
+                      std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
@@ -183,6 +185,12 @@ private:
     void buildLeafRows();
     /// leafIrradiance_ from the leaf rows and the current radiosity (both cores).
     void gatherLeafRows();
+
+    /// Whether no face of the scene can block a segment between the link's receiver and source
+    /// (hierarchical::Shaft against every occluder): then every part of the receiver sees all of every
+    /// part of the source. Tested once per link, when first asked, while the patch rows are built.
+    /// False without occluders to test.
+    [[nodiscard]] bool shaftClear(std::uint32_t link) const;
 
     [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
@@ -223,6 +231,15 @@ private:
     std::size_t mappedTreeSize_ = 0;
     std::vector<Rgb> solution_;
     std::vector<std::uint32_t> receiverLinkBegin_, receiverLinks_;
+    /// The scene's faces, the occluders shaftClear tests (the ray caster's geometry): corners of face k
+    /// are occluderCorners_[occluderBegin_[k] .. occluderBegin_[k + 1]). Empty above
+    /// kMaxShaftOccluders faces, where testing every face per link would cost more than its rays.
+    std::vector<glm::dvec3> occluderCorners_;
+    std::vector<std::uint32_t> occluderBegin_;
+    double shaftTolerance_ = 0;
+    static constexpr std::size_t kMaxShaftOccluders = 256;
+    /// Per link while the patch rows are built (shaftClear): 0 not yet tested, 1 clear, 2 maybe blocked.
+    mutable std::vector<std::uint8_t> linkShaft_;
     std::vector<std::size_t> patchRowBegin_;
     std::vector<GatherTerm> patchRows_;
     bool patchRowsCurrent_ = false;
