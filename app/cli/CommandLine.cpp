@@ -12,6 +12,7 @@
 #include "generated/Version.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
@@ -39,6 +40,32 @@ MethodChoice methodForCommand(const std::string& named, const Scene& scene, cons
     MethodChoice choice = chooseDefaultMethod(scene, meshing);
     std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(choice.method)).c_str(), choice.reason.c_str());
     return choice;
+}
+
+CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, bool grouped) {
+    MeshingOptions meshing;
+    meshing.maxPatchArea = maxPatchArea;
+    CommandSystem system;
+    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
+    system.choice = grouped ? MethodChoice{namedMethod.empty() ? SolverMethod::GaussSeidel : parseMethod(namedMethod),
+                                                namedMethod.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
+                                 : methodForCommand(namedMethod, scene, meshing);
+    system.mesh = meshScene(scene, meshing);
+    if (grouped)
+        system.groups = std::make_shared<const PatchGroups>(groupPatches(system.mesh, GroupingOptions{.maxGroupArea = maxPatchArea}));
+    return system;
+}
+
+std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSystem& system, const SolverOptions& options,
+                                          Progress* progress) {
+    const SolverMethod method = system.choice.method;
+    try {
+        return system.groups ? makeGroupedSolver(method, scene, system.mesh, system.groups, options, progress)
+                             : makeSolver(method, scene, system.mesh, options, progress);
+    } catch (const BudgetError& e) {
+        if (!e.where().file.empty()) throw;
+        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
+    }
 }
 
 std::string methodOptionHelp() {
