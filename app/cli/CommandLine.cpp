@@ -46,13 +46,18 @@ CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene,
     MeshingOptions meshing;
     meshing.maxPatchArea = maxPatchArea;
     CommandSystem system;
-    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
-    system.choice = grouped ? MethodChoice{namedMethod.empty() ? SolverMethod::GaussSeidel : parseMethod(namedMethod),
-                                                namedMethod.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
-                                 : methodForCommand(namedMethod, scene, meshing);
+    if (!grouped) system.choice = methodForCommand(namedMethod, scene, meshing);  // said before the meshing
     system.mesh = meshScene(scene, meshing);
-    if (grouped)
-        system.groups = std::make_shared<const PatchGroups>(groupPatches(system.mesh, GroupingOptions{.maxGroupArea = maxPatchArea}));
+    if (!grouped) return system;
+    system.groups = std::make_shared<const PatchGroups>(groupPatches(system.mesh, GroupingOptions{.maxGroupArea = maxPatchArea}));
+    if (!namedMethod.empty()) {
+        system.choice = {parseMethod(namedMethod), ""};
+        return system;
+    }
+    // The groups are the unknowns: progressive refinement shoots them (DefaultMethod.h).
+    system.choice = chooseDefaultMethodForGroups(system.groups->size(), system.mesh.size());
+    std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(system.choice.method)).c_str(),
+                 system.choice.reason.c_str());
     return system;
 }
 
@@ -70,7 +75,7 @@ std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSyste
 
 std::string methodOptionHelp() {
     return methodNameList() + "; default: " + std::string(methodName(kSolveDefaults.method)) + " up to " +
-           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond";
+           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond; with --group-patches progressive over the groups";
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {

@@ -44,8 +44,8 @@ Scene loadSceneArgument(const std::string& nameOrPath);
 /// ...)"). The reason is empty for a named method.
 MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing);
 /// What solve, probe and render solve: the mesh at --max-patch-area, its patch groups with
-/// --group-patches (GroupedSolver.h), and the method (methodForCommand's, or Gauss-Seidel for groups
-/// unless one is named).
+/// --group-patches (GroupedSolver.h), and the method: the one named, else methodForCommand's, or
+/// for groups chooseDefaultMethodForGroups' by their count (said on stderr alike).
 struct CommandSystem {
     PatchMesh mesh;
     std::shared_ptr<const PatchGroups> groups;  ///< null without --group-patches

@@ -183,7 +183,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     sub->add_flag("--group-patches", options->groupPatches,
                   "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
-                  "(as solve --group-patches); jacobi or gauss-seidel");
+                  "(as solve --group-patches); progressive (the default), jacobi or gauss-seidel");
     sub->add_flag("--photometric", options->photometric,
                   "Also give illuminance_lx and luminance_cd_m2 (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B, Radiance's convention)");
     return {sub, [options] { return runProbe(*options); }};

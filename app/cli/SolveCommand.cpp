@@ -203,7 +203,8 @@ Subcommand addSolveCommand(CLI::App& root) {
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
     sub->add_flag("--group-patches", options->groupPatches,
                   "Group adjacent patches of a smooth surface into unknowns of about --max-patch-area (curved, finely "
-                  "tessellated surfaces); jacobi or gauss-seidel. The form factors still visit every pair of patches");
+                  "tessellated surfaces); progressive (the default), jacobi or gauss-seidel. The form factors still "
+                  "visit every pair of patches");
     sub->add_flag("--photometric", options->photometric,
                   "Also give each surface's luminance (cd/m^2), luminous exitance (lm/m^2) and flux (lm): 179 lm/W, "
                   "Y = 0.265 R + 0.670 G + 0.065 B (Radiance's convention)");
