@@ -1,8 +1,8 @@
 // Patches grouped into unknowns of about the requested area (issue #20 item 5, step B): on curved,
 // finely tessellated surfaces the group count follows the requested area, every patch is in one
-// group and the area is kept; the grouped system keeps the physics: inside a closed furnace
-// B = E / (1 - rho) on every patch (the closed form), and a lit sphere's irradiance per group is the
-// ungrouped solution's over the same patches. Scenes from tests/data/make_grouping_scenes.py.
+// group and the area is kept; the grouped system keeps the physics, gathered (Gauss-Seidel) or shot
+// (progressive refinement): inside a closed furnace B = E / (1 - rho) on every patch (the closed
+// form), and a lit sphere's irradiance per group is the ungrouped solution's over the same patches. Scenes from tests/data/make_grouping_scenes.py.
 // ctest-labels: threads
 #include <doctest/doctest.h>
 
@@ -109,8 +109,8 @@ void checkGroupedFurnace(const Scene& scene, const PatchMesh& mesh, std::shared_
 /// The same furnace solved by grouped progressive refinement (makeGroupedSolver's shots): the
 /// shots' columns F_DC, all of them, must give every group's row sum 1 to the kernels' accuracy,
 /// and the shooting must converge to B = 1 / (1 - rho) on every patch with the power absorbed that
-/// was emitted. With visibility rays, a convex furnace's rays all get through: a curved group's
-/// members face their own ways, and rays judged by one normal for the group would be lost.
+/// was emitted. With visibility rays too: inside a convex furnace every ray between a receiver and a
+/// curved group's members must get through (none caught on the group's own facets near its ends).
 void checkProgressiveFurnace(const Scene& scene, const PatchMesh& mesh, std::shared_ptr<const PatchGroups> groups,
                              double rho, int visibilityRays) {
     SolverOptions options;
