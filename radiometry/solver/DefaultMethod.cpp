@@ -38,8 +38,8 @@ MethodChoice chooseDefaultMethodForGroups(std::size_t groups, std::size_t patche
     if (groups > kProgressiveMaxPatches)
         return {SolverMethod::Progressive, count + "progressive refinement over the groups; hierarchical, faster above " +
                                                limit + " unknowns, takes no groups"};
-    return {SolverMethod::Progressive, count + "progressive refinement over the groups, the unknowns (hierarchical, "
-                                               "for more than " + limit + ", takes no groups)"};
+    return {SolverMethod::Progressive, count + "progressive refinement over the groups, the unknowns; hierarchical, "
+                                               "for more than " + limit + ", takes no groups"};
 }
 
 MethodChoice chooseDefaultMethod(const Scene& scene, const MeshingOptions& meshing) {
