@@ -12,6 +12,7 @@
 #include "generated/Version.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
@@ -41,9 +42,40 @@ MethodChoice methodForCommand(const std::string& named, const Scene& scene, cons
     return choice;
 }
 
+CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, bool grouped) {
+    MeshingOptions meshing;
+    meshing.maxPatchArea = maxPatchArea;
+    CommandSystem system;
+    if (!grouped) system.choice = methodForCommand(namedMethod, scene, meshing);  // said before the meshing
+    system.mesh = meshScene(scene, meshing);
+    if (!grouped) return system;
+    system.groups = std::make_shared<const PatchGroups>(groupPatches(system.mesh, GroupingOptions{.maxGroupArea = maxPatchArea}));
+    if (!namedMethod.empty()) {
+        system.choice = {parseMethod(namedMethod), ""};
+        return system;
+    }
+    // The groups are the unknowns: progressive refinement shoots them (DefaultMethod.h).
+    system.choice = chooseDefaultMethodForGroups(system.groups->size(), system.mesh.size());
+    std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(system.choice.method)).c_str(),
+                 system.choice.reason.c_str());
+    return system;
+}
+
+std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSystem& system, const SolverOptions& options,
+                                          Progress* progress) {
+    const SolverMethod method = system.choice.method;
+    try {
+        return system.groups ? makeGroupedSolver(method, scene, system.mesh, system.groups, options, progress)
+                             : makeSolver(method, scene, system.mesh, options, progress);
+    } catch (const BudgetError& e) {
+        if (!e.where().file.empty()) throw;
+        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
+    }
+}
+
 std::string methodOptionHelp() {
     return methodNameList() + "; default: " + std::string(methodName(kSolveDefaults.method)) + " up to " +
-           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond";
+           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond; with --group-patches progressive over the groups";
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {

@@ -2,12 +2,15 @@
 // `radiant [SCENE]` opens the lab; `radiant solve|probe|reference|render|bench ...` run without a window.
 // Exit status 0 on success, 2 on bad arguments or bad input (one line on stderr).
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/solver/DefaultMethod.h"
+#include "radiometry/solver/Solver.h"
 
 namespace CLI {
 class App;
@@ -40,6 +43,18 @@ Scene loadSceneArgument(const std::string& nameOrPath);
 /// (DefaultMethod.h), said on stderr in one line ("radiant: method: hierarchical (12,000 patches:
 /// ...)"). The reason is empty for a named method.
 MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing);
+/// What solve, probe and render solve: the mesh at --max-patch-area, its patch groups with
+/// --group-patches (GroupedSolver.h), and the method: the one named, else methodForCommand's, or
+/// for groups chooseDefaultMethodForGroups' by their count (said on stderr alike).
+struct CommandSystem {
+    PatchMesh mesh;
+    std::shared_ptr<const PatchGroups> groups;  ///< null without --group-patches
+    MethodChoice choice;
+};
+CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, bool grouped);
+/// The system's solver (grouped or not); a budget refusal that names no file names the scene.
+std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSystem& system, const SolverOptions& options,
+                                          Progress* progress = nullptr);
 /// The --method help: the names and how the default is chosen.
 std::string methodOptionHelp();
 

@@ -21,10 +21,8 @@
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
-#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
-#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "radiometry/units/Photometry.h"
@@ -84,19 +82,10 @@ int runProbe(const ProbeCommandOptions& options) {
 
     const Scene scene = loadSceneArgument(options.scene);
     const std::optional<std::size_t> target = chooseTarget(scene, options.target);
-    MeshingOptions meshing;
-    meshing.maxPatchArea = options.maxPatchArea;
-    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
-    const MethodChoice choice =
-        options.groupPatches
-            ? MethodChoice{options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method),
-                           options.method.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
-            : methodForCommand(options.method, scene, meshing);
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const MethodChoice& choice = system.choice;
     const SolverMethod method = choice.method;
-    const PatchMesh mesh = meshScene(scene, meshing);
-    std::shared_ptr<const PatchGroups> groups;
-    if (options.groupPatches)
-        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
+    const PatchMesh& mesh = system.mesh;
     // One BVH for the scene: the probe's visibility and the solver's share it.
     const auto rays = std::make_shared<const RayCaster>(scene);
     const Probe probe(scene, mesh, rays.get());
@@ -122,13 +111,12 @@ int runProbe(const ProbeCommandOptions& options) {
     std::string solution;
     std::size_t iterations = 0;
     double residual = 1;
-    try {
+    {
         SolverOptions solverOptions;
         solverOptions.rays = rays;
         solverOptions.linkEpsilon = options.linkTolerance;
         solverOptions.view = viewFromArguments(options.view, scene);
-        std::unique_ptr<Solver> solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions)
-                                                : makeSolver(method, scene, mesh, solverOptions);
+        const std::unique_ptr<Solver> solver = makeCommandSolver(scene, system, solverOptions);
         while (iterations < options.maxIterations) {
             residual = solver->step().residual;
             ++iterations;
@@ -136,9 +124,6 @@ int runProbe(const ProbeCommandOptions& options) {
         }
         radiosity = solver->solution();
         solution = "solved";
-    } catch (const BudgetError& e) {
-        if (!e.where().file.empty()) throw;
-        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
     }
 
     const ProbeReading reading = probe.measure(at, normal, radiosity, target);
@@ -198,7 +183,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
     sub->add_flag("--group-patches", options->groupPatches,
                   "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
-                  "(as solve --group-patches); jacobi or gauss-seidel");
+                  "(as solve --group-patches); progressive (the default), jacobi or gauss-seidel");
     sub->add_flag("--photometric", options->photometric,
                   "Also give illuminance_lx and luminance_cd_m2 (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B, Radiance's convention)");
     return {sub, [options] { return runProbe(*options); }};

@@ -15,10 +15,8 @@
 #include "app/cli/ViewArguments.h"
 #include "app/window/OffscreenContext.h"
 #include "radiometry/common/Error.h"
-#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/SceneLibrary.h"
-#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "render/OffscreenRender.h"
@@ -104,30 +102,16 @@ int runRender(const RenderOptions& options) {
     LoadedScene loaded = loadScene(options.scene);
     for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
     const Scene& scene = loaded.scene;
-    MeshingOptions meshing;
-    meshing.maxPatchArea = options.maxPatchArea;
-    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
-    const SolverMethod method =
-        options.groupPatches ? (options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method))
-                             : methodForCommand(options.method, scene, meshing).method;
-    const PatchMesh mesh = meshScene(scene, meshing);
-    std::shared_ptr<const PatchGroups> groups;
-    if (options.groupPatches)
-        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const PatchMesh& mesh = system.mesh;
+    const SolverMethod method = system.choice.method;
     // One view for the picture and for importance's refinement: what is drawn is what was refined.
     const double aspect = static_cast<double>(options.width) / static_cast<double>(options.height);
     const std::optional<View> view = viewFromArguments(options.view, scene, aspect);
     SolverOptions solverOptions;
     solverOptions.linkEpsilon = options.linkTolerance;
     solverOptions.view = view;
-    std::unique_ptr<Solver> solver;
-    try {
-        solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions)
-                        : makeSolver(method, scene, mesh, solverOptions);
-    } catch (const BudgetError& e) {
-        if (!e.where().file.empty()) throw;
-        throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
-    }
+    const std::unique_ptr<Solver> solver = makeCommandSolver(scene, system, solverOptions);
     const render::Camera camera = !options.camera.empty() ? sceneCamera(scene, options.camera)
                                   : view                  ? render::cameraFromView(*view)
                                                           : render::homeCamera(scene);

@@ -18,7 +18,6 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
-#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "radiometry/sources/DiffuseEmitter.h"
@@ -89,19 +88,11 @@ int runSolve(const SolveOptions& options) {
 
     const auto meshStart = std::chrono::steady_clock::now();
     const Scene scene = loadSceneArgument(options.scene);
-    MeshingOptions meshing;
-    meshing.maxPatchArea = options.maxPatchArea;
-    // Grouped patches are one matrix's unknowns (GroupedSolver.h): Gauss-Seidel unless named.
-    const MethodChoice choice =
-        options.groupPatches
-            ? MethodChoice{options.method.empty() ? SolverMethod::GaussSeidel : parseMethod(options.method),
-                           options.method.empty() ? "--group-patches: the groups' form-factor matrix" : ""}
-            : methodForCommand(options.method, scene, meshing);
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const MethodChoice& choice = system.choice;
     const SolverMethod method = choice.method;
-    const PatchMesh mesh = meshScene(scene, meshing);
-    std::shared_ptr<const PatchGroups> groups;
-    if (options.groupPatches)
-        groups = std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = options.maxPatchArea}));
+    const PatchMesh& mesh = system.mesh;
+    const std::shared_ptr<const PatchGroups>& groups = system.groups;
     const double meshSeconds = secondsSince(meshStart);
 
     const auto formFactorStart = std::chrono::steady_clock::now();
@@ -112,13 +103,7 @@ int runSolve(const SolveOptions& options) {
         SolverOptions solverOptions;
         solverOptions.linkEpsilon = options.linkTolerance;
         solverOptions.view = viewFromArguments(options.view, scene);
-        try {
-            solver = groups ? makeGroupedSolver(method, scene, mesh, groups, solverOptions, &progress)
-                            : makeSolver(method, scene, mesh, solverOptions, &progress);
-        } catch (const BudgetError& e) {
-            if (!e.where().file.empty()) throw;
-            throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big
-        }
+        solver = makeCommandSolver(scene, system, solverOptions, &progress);
     }
     const double formFactorSeconds = secondsSince(formFactorStart);
 
@@ -218,7 +203,8 @@ Subcommand addSolveCommand(CLI::App& root) {
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
     sub->add_flag("--group-patches", options->groupPatches,
                   "Group adjacent patches of a smooth surface into unknowns of about --max-patch-area (curved, finely "
-                  "tessellated surfaces); jacobi or gauss-seidel. The form factors still visit every pair of patches");
+                  "tessellated surfaces); progressive (the default), jacobi or gauss-seidel. The form factors still "
+                  "visit every pair of patches");
     sub->add_flag("--photometric", options->photometric,
                   "Also give each surface's luminance (cd/m^2), luminous exitance (lm/m^2) and flux (lm): 179 lm/W, "
                   "Y = 0.265 R + 0.670 G + 0.065 B (Radiance's convention)");

@@ -45,7 +45,10 @@ void ScenePanel::draw() {
         const Scene& scene = *snapshot.scene;
         row("Scene", "%s", scene.name.c_str());
         row("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
-        row("Patches", "%zu", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
+        if (snapshot.groups)
+            row("Patches", "%zu  (%zu groups)", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0}, snapshot.groups->size());
+        else
+            row("Patches", "%zu", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
@@ -113,6 +116,12 @@ void ScenePanel::drawMeshing() {
         maxPatchArea_ = requested;
         live_.send(command::Remesh{MeshingOptions{requested}});
     }
+    if (ImGui::Checkbox("Group patches", &groupPatches_)) live_.send(command::SetGrouping{groupPatches_});
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box)\n"
+                          "share one radiosity, in groups of about the largest patch area:\n"
+                          "the unknowns follow the slider where the triangles are finer.\n"
+                          "Progressive, Jacobi and Gauss-Seidel solve groups; hierarchical does not.");
 }
 
 } // namespace radiant::app

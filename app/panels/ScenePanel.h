@@ -1,6 +1,7 @@
 #pragma once
 // Scene: pick a built-in scene, open a glTF file (path or drag and drop), see the surface and
-// patch counts, and set the meshing (largest patch area). Files load on a worker (SceneJob); the
+// patch counts, and set the meshing (largest patch area, and whether patches of smooth surfaces are
+// grouped into unknowns of about that area). Files load on a worker (SceneJob); the
 // solver thread meshes and solves. A failure is shown in red and the previous scene stays.
 #include <array>
 #include <string>
@@ -32,6 +33,7 @@ private:
     LiveSolve& live_;
     double maxPatchArea_;  ///< m^2, asked of the solver thread
     float sliderAreaCm2_;  ///< the knob, in cm^2
+    bool groupPatches_ = false;  ///< the "Group patches" box, sent as command::SetGrouping
     std::vector<std::string> builtins_;
     std::array<char, 1024> path_{};
     std::string error_;

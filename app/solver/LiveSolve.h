@@ -58,6 +58,7 @@ private:
     std::optional<MeshingOptions> sentMeshing_;
     std::optional<double> sentTolerance_, sentLinkTolerance_;
     std::optional<SolverMethod> sentMethod_;
+    bool groupingSent_ = false;  ///< the last SetGrouping sent grouped
     bool runSent_ = false;  ///< the last of Run and Pause sent was Run
 };
 

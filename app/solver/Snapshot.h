@@ -11,6 +11,7 @@
 
 #include "app/solver/ConvergenceRecord.h"
 #include "app/solver/SolveHistory.h"
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/solver/SolveDefaults.h"
@@ -56,6 +57,9 @@ struct Snapshot {
     /// started: a materials edit must leave it unchanged.
     std::uint64_t solverBuilds = 0;
     MeshingOptions meshing;                 ///< what `mesh` was made with
+    /// The patch groups solved as the unknowns (command::SetGrouping), made from `mesh`; null when
+    /// the lab does not group.
+    std::shared_ptr<const PatchGroups> groups;
     /// Hierarchical and importance methods: every link as a segment between the centroids of the
     /// two elements it joins (pairs of ends, m). Shared by successive snapshots while the links
     /// stay the same (refinement is what changes them); null for the other methods.

@@ -45,6 +45,12 @@ struct SetLinkTolerance {
 struct Remesh {
     MeshingOptions meshing;
 };
+/// Groups adjacent patches of a smooth surface into unknowns of about the meshing's largest patch
+/// area (PatchGroups.h), on this mesh and every later one, or stops grouping; rebuilds the solver.
+/// Hierarchical and importance radiosity take no groups (the solver's error says so).
+struct SetGrouping {
+    bool groupPatches = false;
+};
 /// A point on the scene (the probe's pick) whose hierarchical links the snapshots single out: the
 /// links of the element under it and of every ancestor, all of which it gathers through push-pull.
 struct FocusedPoint {
@@ -75,5 +81,5 @@ namespace radiant::app {
 using SolverCommand = std::variant<command::Run, command::Pause, command::Step, command::Reset, command::SetMethod,
                                    command::SetMaterial, command::SetTolerance, command::Remesh, command::LoadScene,
                                    command::FocusPoint, command::SetLinkTolerance, command::SetView,
-                                   command::ResetMaterials>;
+                                   command::ResetMaterials, command::SetGrouping>;
 }

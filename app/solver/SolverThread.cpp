@@ -11,8 +11,10 @@
 #include "app/solver/ThreadPriority.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/FormFactorMatrixBudget.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -38,11 +40,15 @@ struct SolverThread::State {
     std::shared_ptr<const RayCaster> rays;
     MeshingOptions meshing;
     std::shared_ptr<const PatchMesh> mesh;
+    /// command::SetGrouping: `mesh`'s patches grouped into the unknowns (null when not grouping).
+    bool groupPatches = false;
+    std::shared_ptr<const PatchGroups> groups;
     std::unique_ptr<Solver> solver;
     /// The scene and mesh the solver was built from, kept alive as long as it is: a solver may hold
     /// references to them, while materials edits replace `scene`.
     std::shared_ptr<const Scene> solverScene;
     std::shared_ptr<const PatchMesh> solverMesh;
+    std::shared_ptr<const PatchGroups> solverGroups;
     SolverMethod method = kSolveDefaults.method;
     /// The user picked `method` (SetMethod) for this scene; otherwise each new mesh chooses it by its
     /// size (DefaultMethod.h) and `methodReason` says why.
@@ -123,6 +129,18 @@ std::pair<std::shared_ptr<const std::vector<glm::vec3>>, std::size_t> focusLinkS
             static_cast<std::size_t>(std::count(linkedAtDepth.begin(), linkedAtDepth.end(), true))};
 }
 
+/// The mesh's patch groups when the lab groups, at the meshing's largest patch area (as the command
+/// line's --group-patches at --max-patch-area).
+std::shared_ptr<const PatchGroups> groupsFor(bool grouping, const PatchMesh& mesh, const MeshingOptions& meshing) {
+    if (!grouping) return nullptr;
+    return std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = meshing.maxPatchArea}));
+}
+
+/// The default method for the mesh, or for its groups: the unknowns are what cost (DefaultMethod.h).
+MethodChoice defaultMethodFor(const PatchMesh& mesh, const PatchGroups* groups) {
+    return groups ? chooseDefaultMethodForGroups(groups->size(), mesh.size()) : chooseDefaultMethod(mesh.size());
+}
+
 /// Index of the first patch whose radiosity is NaN or infinite, or npos.
 std::size_t firstNonFinite(const std::vector<Rgb>& radiosity) {
     for (std::size_t i = 0; i < radiosity.size(); ++i)
@@ -150,7 +168,8 @@ SolverThread::~SolverThread() {
 
 bool SolverThread::cancelsLongWork(const SolverCommand& command, SolverActivity activity) {
     // A new method makes form factors pointless but not the mesh; a new mesh or scene makes both.
-    if (std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::SetLinkTolerance>(command))
+    if (std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::SetLinkTolerance>(command) ||
+        std::holds_alternative<command::SetGrouping>(command))
         return activity == SolverActivity::FormFactors;
     if (std::holds_alternative<command::Remesh>(command) || std::holds_alternative<command::LoadScene>(command))
         return activity == SolverActivity::Meshing || activity == SolverActivity::FormFactors;
@@ -308,6 +327,22 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     state.history.restart(c.method);  // the other methods' runs stay, to compare
                     ensureSolver(state);
                 }
+            } else if constexpr (std::is_same_v<C, command::SetGrouping>) {
+                if (c.groupPatches == state.groupPatches) return;
+                state.groupPatches = c.groupPatches;
+                if (!state.mesh) return;  // the next mesh is grouped
+                state.groups = groupsFor(state.groupPatches, *state.mesh, state.meshing);
+                if (!state.methodPicked) {
+                    MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
+                    state.method = choice.method;
+                    state.methodReason = std::move(choice.reason);
+                }
+                state.solver.reset();
+                state.running = false;
+                state.pendingSteps = 0;
+                state.history.clear(state.method);
+                publish(state);
+                ensureSolver(state);
             } else if constexpr (std::is_same_v<C, command::SetMaterial>) {
                 if (!state.scene || c.surface >= state.scene->surfaces.size())
                     throw RadiantError({"", "set material"}, "no surface " + std::to_string(c.surface));
@@ -368,6 +403,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                     state.scene = std::move(scene);
                     state.rays = std::move(rays);
                     state.mesh.reset();
+                    state.groups.reset();
                     state.solver.reset();
                     ++state.meshGeneration;
                     state.running = false;
@@ -380,6 +416,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.rays = std::move(rays);
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
+                state.groups = groupsFor(state.groupPatches, *state.mesh, state.meshing);
                 ++state.meshGeneration;
                 // A method picked for another scene stays unless its matrix cannot hold this one:
                 // opening a scene never ends in a refusal (re-meshing finer may, naming the slider).
@@ -388,7 +425,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                                             formFactorMatrixPeakBytes(state.mesh->size()) > options_.matrixBudgetBytes;
                 if (!state.methodPicked || pickDoesNotFit) {
                     state.methodPicked = false;
-                    MethodChoice choice = chooseDefaultMethod(state.mesh->size());
+                    MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
                     state.method = choice.method;
                     state.methodReason = std::move(choice.reason);
                 }
@@ -412,12 +449,15 @@ void SolverThread::ensureSolver(State& state) {
     state.solver.reset();
     state.solverScene = state.scene;
     state.solverMesh = state.mesh;
+    state.solverGroups = state.groups;
     ++state.solverBuilds;
     state.linksStale = true;
     SolverOptions options = options_;
     if (state.view) options.view = state.view;
     options.rays = state.rays;
-    state.solver = factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
+    state.solver = state.solverGroups ? makeGroupedSolver(state.method, *state.solverScene, *state.solverMesh,
+                                                          state.solverGroups, options, &progress_)
+                                      : factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
     activity_.store(SolverActivity::Idle);
 }
 
@@ -488,6 +528,7 @@ void SolverThread::publish(State& state) {
     s->error = state.error;
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
+    s->groups = state.groups;
     publishOverlays(state, *s);
     generationPublished_.store(s->generation, std::memory_order_relaxed);
     std::shared_ptr<const Snapshot> next(std::move(s));

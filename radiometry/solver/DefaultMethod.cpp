@@ -32,6 +32,16 @@ MethodChoice chooseDefaultMethod(std::size_t patches) {
                                            "tracer; hierarchical above " + limit + " patches"};
 }
 
+MethodChoice chooseDefaultMethodForGroups(std::size_t groups, std::size_t patches) {
+    const std::string count = withThousands(patches) + " patches in " + withThousands(groups) + " groups: ";
+    const std::string limit = withThousands(kProgressiveMaxPatches);
+    if (groups > kProgressiveMaxPatches)
+        return {SolverMethod::Progressive, count + "progressive refinement over the groups; hierarchical, faster above " +
+                                               limit + " unknowns, takes no groups"};
+    return {SolverMethod::Progressive, count + "progressive refinement over the groups, the unknowns; hierarchical, "
+                                               "for more than " + limit + ", takes no groups"};
+}
+
 MethodChoice chooseDefaultMethod(const Scene& scene, const MeshingOptions& meshing) {
     return chooseDefaultMethod(estimatePatchCount(scene, meshing));
 }

@@ -35,5 +35,10 @@ struct MethodChoice {
 [[nodiscard]] MethodChoice chooseDefaultMethod(std::size_t patches);
 /// The same from the patch count meshScene(scene, meshing) will make (estimatePatchCount: exact).
 [[nodiscard]] MethodChoice chooseDefaultMethod(const Scene& scene, const MeshingOptions& meshing);
+/// With patch groups (PatchGroups.h) the groups are the unknowns, and progressive refinement's shots
+/// follow them, not the patches (GroupedSolver.h): progressive refinement over the groups, whatever
+/// their count, since hierarchical radiosity refines its own elements and takes no groups (beyond
+/// kProgressiveMaxPatches groups the reason says so).
+[[nodiscard]] MethodChoice chooseDefaultMethodForGroups(std::size_t groups, std::size_t patches);
 
 } // namespace radiant

@@ -28,9 +28,9 @@ public:
 
     [[nodiscard]] SolverMethod method() const override { return inner_->method(); }
     IterationStats step() override {
-        const IterationStats stats = inner_->step();
+        inner_->step();
         spread();
-        return stats;
+        return stats_;
     }
     [[nodiscard]] const std::vector<Rgb>& solution() const override { return perPatch_; }
     void setMaterial(std::size_t surface, const Rgb& reflectance, const ExitanceRgb& exitance) override {
@@ -41,7 +41,7 @@ public:
         inner_->reset();
         spread();
     }
-    [[nodiscard]] const IterationStats& lastStats() const override { return inner_->lastStats(); }
+    [[nodiscard]] const IterationStats& lastStats() const override { return stats_; }
     [[nodiscard]] std::size_t bytes() const override {
         return inner_->bytes() + perPatch_.capacity() * sizeof(Rgb) +
                (groups_->groupOf.capacity() + groups_->members.capacity()) * sizeof(std::uint32_t);
@@ -52,11 +52,15 @@ private:
         const std::vector<Rgb>& perGroup = inner_->solution();
         perPatch_.resize(groups_->groupOf.size());
         for (std::size_t p = 0; p < perPatch_.size(); ++p) perPatch_[p] = perGroup[groups_->groupOf[p]];
+        stats_ = inner_->lastStats();
+        // The inner shooter is a group; whoever shows it (the lab's last-shooter overlay) wants a patch.
+        if (stats_.shooter >= 0) stats_.shooter = groups_->patchesOf(static_cast<std::size_t>(stats_.shooter))[0];
     }
 
     std::unique_ptr<Solver> inner_;
     std::shared_ptr<const PatchGroups> groups_;
     std::vector<Rgb> perPatch_;
+    IterationStats stats_;
 };
 
 } // namespace
@@ -134,6 +138,54 @@ FormFactorMatrix computeGroupedFormFactors(const PatchMesh& mesh, const PatchGro
     return FormFactorMatrix(std::move(rows));
 }
 
+ProgressiveShooters groupShooters(const PatchMesh& mesh, const PatchGroups& groups, std::size_t block) {
+    if (groups.groupOf.size() != mesh.size())
+        throw RadiantError({"", "patch groups"}, "the groups do not match the mesh");
+    const ProgressiveShooters blocks = blockShooters(mesh, block);
+    std::vector<std::uint32_t> blockOf(mesh.size());
+    for (std::size_t b = 0; b < blocks.size(); ++b)
+        for (const std::uint32_t p : blocks.group(b)) blockOf[p] = static_cast<std::uint32_t>(b);
+    // A block shoots as one when every patch of it is in a group lying wholly within it.
+    std::vector<std::int64_t> within(groups.size(), -1);
+    std::vector<std::size_t> covered(blocks.size(), 0);
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const auto patches = groups.patchesOf(g);
+        const std::uint32_t b = blockOf[patches[0]];
+        if (std::all_of(patches.begin(), patches.end(), [&](std::uint32_t p) { return blockOf[p] == b; })) {
+            within[g] = b;
+            covered[b] += patches.size();
+        }
+    }
+    std::vector<std::vector<std::uint32_t>> blockGroups(blocks.size());
+    std::vector<std::uint32_t> alone;
+    for (std::size_t g = 0; g < groups.size(); ++g) {
+        const std::int64_t b = within[g];
+        if (b >= 0 && covered[static_cast<std::size_t>(b)] == blocks.group(static_cast<std::size_t>(b)).size())
+            blockGroups[static_cast<std::size_t>(b)].push_back(static_cast<std::uint32_t>(g));
+        else
+            alone.push_back(static_cast<std::uint32_t>(g));
+    }
+    ProgressiveShooters shooters;
+    shooters.first.push_back(0);
+    const auto close = [&](const PatchPolygon& outline, const Patch& patch) {
+        shooters.first.push_back(static_cast<std::uint32_t>(shooters.members.size()));
+        shooters.polygons.push_back(outline);
+        shooters.surface.push_back(patch.surface);
+        shooters.face.push_back(patch.face);
+    };
+    for (std::size_t b = 0; b < blocks.size(); ++b) {
+        if (blockGroups[b].empty()) continue;
+        shooters.members.insert(shooters.members.end(), blockGroups[b].begin(), blockGroups[b].end());
+        close(blocks.polygons[b], mesh.patches[blocks.group(b)[0]]);
+    }
+    for (const std::uint32_t g : alone) {
+        shooters.members.push_back(g);
+        const auto patches = groups.patchesOf(g);
+        close(patches.size() == 1 ? mesh.polygon(patches[0]) : PatchPolygon{}, mesh.patches[patches[0]]);
+    }
+    return shooters;
+}
+
 PatchMaterials groupedMaterials(const Scene& scene, const PatchMesh& mesh, const PatchGroups& groups,
                                 const RayCaster* rays) {
     const PatchMaterials perPatch = PatchMaterials::from(scene, mesh, rays);
@@ -160,11 +212,23 @@ PatchMaterials groupedMaterials(const Scene& scene, const PatchMesh& mesh, const
 std::unique_ptr<Solver> makeGroupedSolver(SolverMethod method, const Scene& scene, const PatchMesh& mesh,
                                           std::shared_ptr<const PatchGroups> groups, const SolverOptions& options,
                                           Progress* progress) {
-    if (method != SolverMethod::Jacobi && method != SolverMethod::GaussSeidel)
-        throw RadiantError({scene.name, "patch groups"}, "grouped patches are solved by jacobi or gauss-seidel only, not " +
-                                                             std::string(methodName(method)));
+    if (method != SolverMethod::Jacobi && method != SolverMethod::GaussSeidel && method != SolverMethod::Progressive)
+        throw RadiantError({scene.name, "patch groups"},
+                           "grouped patches are solved by jacobi, gauss-seidel or progressive only, not " +
+                               std::string(methodName(method)));
     if (!groups || groups->groupOf.size() != mesh.size() || groups->surfaceFirstGroup.size() != scene.surfaces.size() + 1)
         throw RadiantError({scene.name, "patch groups"}, "the groups do not match the mesh");
+    if (method == SolverMethod::Progressive) {
+        SolverOptions shots = options;  // one ray caster for the direct light and the shots
+        if (!shots.rays) shots.rays = std::make_shared<const RayCaster>(scene);
+        PatchMaterials materials = groupedMaterials(scene, mesh, *groups, shots.rays.get());
+        const ProgressiveOptions progressive;  // the ungrouped solver's block size
+        ProgressiveShooters shooters =
+            groupShooters(mesh, *groups, blockForShooterCount(mesh.size(), progressive.shooterCount));
+        GroupShotFormFactors formFactors = makeRayCastPatchGroupShotFormFactors(scene, mesh, groups, shooters, shots);
+        auto inner = std::make_unique<ProgressiveSolver>(std::move(materials), std::move(shooters), std::move(formFactors));
+        return std::make_unique<GroupedSolver>(std::move(inner), std::move(groups));
+    }
     checkFormFactorMatrixBudget(groups->size(), options.matrixBudgetBytes);
     std::optional<RayCaster> own;
     const RayCaster* rays = options.rays ? options.rays.get() : &own.emplace(scene);

@@ -32,6 +32,7 @@
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/FormFactorMatrix.h"
+#include "radiometry/solver/GroupedSolver.h"
 #include "radiometry/solver/ParallelFor.h"
 #include "radiometry/solver/ProgressiveSolver.h"
 
@@ -158,6 +159,9 @@ double receiverAverage(const PatchPolygon& receiver, const PatchPolygon& shooter
 struct ShotTargets {
     std::vector<glm::dvec3> points;
     std::vector<std::uint32_t> member;
+    /// Each target's member's normal, for a group that is not planar (patch groups); empty: the
+    /// shooter's one normal.
+    std::vector<glm::dvec3> normal;
 };
 
 /// visibilityRays x kPenumbraRayFactor points of the group, stratified over its members' share of the shot's power
@@ -249,7 +253,8 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
         const double weight = memberWeight.empty() ? 1.0 : memberWeight[targets.member[t]];
         if (weight <= 0) continue;
         const glm::dvec3 d = targets.points[t] - from;
-        const bool facing = glm::dot(g.polygons[receiver].normal, d) > 0 && glm::dot(shooterNormal, d) < 0;
+        const glm::dvec3& targetNormal = targets.normal.empty() ? shooterNormal : targets.normal[t];
+        const bool facing = glm::dot(g.polygons[receiver].normal, d) > 0 && glm::dot(targetNormal, d) < 0;
         const bool through = !g.rays->occluded(from, targets.points[t]);
         (facing ? total : totalBehind) += weight;
         if (through) (facing ? unblocked : unblockedBehind) += weight;
@@ -269,10 +274,9 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
 /// independent first rays and a true fraction v it is v^n + (1 - v^n - (1-v)^n) v' for the second
 /// pass's v': 3v^2 - 2v^3 for n = 2), so only a pass of the full visibilityRays decides; weaker
 /// shots cast their fixed few rays, unbiased, and are averaged by the many shots after them.
-double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
-                      int fewRays, int penumbraRays, std::span<const double> memberWeight) {
+double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, const glm::dvec3& shooterNormal,
+                      std::size_t receiver, int fewRays, int penumbraRays, std::span<const double> memberWeight) {
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
-    const glm::dvec3& shooterNormal = g.shooters[shooter].normal;
     double plain = 0;
     const double first = stratifiedVisibility(g, targets, receiver, shooterNormal, fewRays, seed, memberWeight, plain);
     const bool more = penumbraRays > fewRays;
@@ -354,6 +358,20 @@ double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_
     return sum * s.area;
 }
 
+/// A quarter of the penumbra count decides whether the receiver is in a penumbra: all 16 for the
+/// light source's shot (4 all agreeing missed small partial shadows: 10% worst per patch against
+/// Gauss-Seidel, 7% with 16), down to 2 (one a side of an edge) for weak shots.
+int fewRaysFor(const ShotGeometry& g, int penumbraRays) {
+    return std::clamp(penumbraRays / kPenumbraRayFactor, std::min(2, g.options.visibilityRays),
+                      std::max(1, g.options.visibilityRays));
+}
+
+/// The penumbra ray count of a shot carrying `powerShare` of the emitted power (kFullPenumbraShare).
+int penumbraRaysFor(const ShotTargets& targets, double powerShare) {
+    const int most = static_cast<int>(targets.points.size());
+    return std::clamp(static_cast<int>(std::ceil(most * std::min(1.0, std::abs(powerShare) / kFullPenumbraShare))), 1, most);
+}
+
 double receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
                          std::span<const double> memberShare, int penumbraRays) {
     const PatchPolygon& s = g.shooters[shooter];
@@ -365,12 +383,37 @@ double receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std:
     thread_local std::vector<double> memberWeight;
     const double unoccluded = unoccludedFromShot(g, shooter, receiver, memberShare, memberWeight);
     if (unoccluded <= 0 || g.options.visibilityRays <= 0) return unoccluded;
-    // A quarter of the penumbra count decides whether the receiver is in a penumbra: all 16 for
-    // the light source's shot (4 all agreeing missed small partial shadows: 10% worst per patch
-    // against Gauss-Seidel, 7% with 16), down to 2 (one a side of an edge) for weak shots.
-    const int fewRays = std::clamp(penumbraRays / kPenumbraRayFactor, std::min(2, g.options.visibilityRays),
-                                   std::max(1, g.options.visibilityRays));
-    return unoccluded * shotVisibility(g, targets, shooter, receiver, fewRays, penumbraRays, memberWeight);
+    return unoccluded * shotVisibility(g, targets, shooter, s.normal, receiver, fewRaysFor(g, penumbraRays), penumbraRays,
+                                       memberWeight);
+}
+
+/// F_{receiver -> group} for a group of patches that need not be planar (PatchGroups.h), whose
+/// radiosity is uniform, so each member sends in proportion to its area: the sum over its members
+/// of each member's exact kernel averaged over the receiver (its own rule for its own gap), times
+/// the visibility of rays to targets spread over the members by area, each ray weighed by its
+/// member's kernel per unit area and facing judged by its member's normal. A member on the
+/// receiver's own face, or wholly behind it, sends nothing.
+double receiverToPatchGroup(const ShotGeometry& g, const ShotTargets& targets, std::size_t group, std::size_t receiver,
+                            int penumbraRays) {
+    const PatchPolygon& r = g.polygons[receiver];
+    const Patch& pr = g.patches[receiver];
+    const auto members = g.groups.group(group);
+    thread_local std::vector<double> memberWeight;
+    memberWeight.assign(members.size(), 0.0);
+    double unoccluded = 0;
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        const PatchPolygon& m = g.polygons[members[k]];
+        const Patch& pm = g.patches[members[k]];
+        if ((pm.surface == pr.surface && pm.face == pr.face) || cannotSeeEachOther(m, r)) continue;
+        const double lowerBound = glm::length(r.centroid - m.centroid) - g.patchRadius[members[k]];
+        const double f = receiverAverage(r, m, ruleFor(r, m, lowerBound));
+        if (!(f > 0)) continue;
+        memberWeight[k] = f / m.area;
+        unoccluded += f;
+    }
+    if (unoccluded <= 0 || g.options.visibilityRays <= 0) return unoccluded;
+    return unoccluded * shotVisibility(g, targets, group, glm::dvec3(0.0), receiver, fewRaysFor(g, penumbraRays),
+                                       penumbraRays, memberWeight);
 }
 
 /// Each member's share of the shot's power (of the group's area when no power is given, or none
@@ -434,13 +477,91 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
                       std::span<double> toShooter) {
         const ShotTargets targets = shotTargets(*geometry, shooter, memberPower);
         const std::vector<double> share = memberShares(*geometry, shooter, memberPower);
-        const int most = static_cast<int>(targets.points.size());
-        const int penumbraRays = std::clamp(
-            static_cast<int>(std::ceil(most * std::min(1.0, std::abs(powerShare) / kFullPenumbraShare))), 1, most);
+        const int penumbraRays = penumbraRaysFor(targets, powerShare);
         parallelFor(toShooter.size(), 256, [&](std::size_t begin, std::size_t end) {
             for (std::size_t j = begin; j < end; ++j)
                 toShooter[j] = receiverToShooter(*geometry, targets, shooter, j, share, penumbraRays);
         });
+    };
+}
+
+GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, const PatchMesh& mesh,
+                                                          std::shared_ptr<const PatchGroups> groups,
+                                                          const ProgressiveShooters& shooters, const SolverOptions& options) {
+    if (!groups || groups->groupOf.size() != mesh.size() || shooters.members.size() != groups->size() ||
+        shooters.polygons.size() != shooters.size() || shooters.surface.size() != shooters.size() ||
+        shooters.face.size() != shooters.size())
+        throw RadiantError({scene.name, "patch groups"}, "the groups or their shooters do not match the mesh");
+    auto geometry = std::make_shared<ShotGeometry>();
+    geometry->polygons.resize(mesh.size());
+    for (std::size_t i = 0; i < mesh.size(); ++i) geometry->polygons[i] = mesh.polygon(i);
+    geometry->patches = mesh.patches;
+    for (const PatchPolygon& patch : geometry->polygons) {
+        double radius = 0;
+        for (const glm::dvec3& corner : patch.corners()) radius = std::max(radius, glm::length(corner - patch.centroid));
+        geometry->patchRadius.push_back(radius);
+    }
+    // The shot geometry's groups are the shooters' patches: each shooter's groups' patches, in order.
+    geometry->groups.first.push_back(0);
+    for (std::size_t s = 0; s < shooters.size(); ++s) {
+        for (const std::uint32_t group : shooters.group(s))
+            for (const std::uint32_t p : groups->patchesOf(group)) geometry->groups.members.push_back(p);
+        geometry->groups.first.push_back(static_cast<std::uint32_t>(geometry->groups.members.size()));
+    }
+    geometry->shooters = shooters.polygons;
+    geometry->shooterSurface = shooters.surface;
+    geometry->shooterFace = shooters.face;
+    for (const PatchPolygon& outline : shooters.polygons) {
+        double radius = 0;
+        for (const glm::dvec3& corner : outline.corners()) radius = std::max(radius, glm::length(corner - outline.centroid));
+        geometry->shooterRadius.push_back(radius);
+    }
+    geometry->timesShot.assign(shooters.size(), 0);
+    geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
+    geometry->options = options.formFactors;
+    geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
+    auto perPatch = std::make_shared<std::vector<double>>(mesh.size());
+    return [geometry, groups = std::move(groups), shooterGroups = shooters, perPatch](
+               std::size_t shooter, std::span<const double> memberPower, double powerShare, std::span<double> toShooter) {
+        const ShotGeometry& g = *geometry;
+        std::vector<double>& f = *perPatch;
+        if (g.shooters[shooter].count > 0) {
+            // A planar block of groups (or one planar patch): the block kernel of the patch shooters,
+            // each patch sending its group's share of the power spread over the group's area.
+            const auto members = shooterGroups.group(shooter);
+            std::vector<double> patchPower;
+            patchPower.reserve(g.groups.group(shooter).size());
+            double total = 0;
+            for (std::size_t k = 0; k < members.size(); ++k)
+                total += memberPower.size() == members.size() ? std::max(0.0, memberPower[k]) : 0.0;
+            for (std::size_t k = 0; k < members.size(); ++k) {
+                const double groupShare = total > 0 ? std::max(0.0, memberPower[k]) / total : groups->area[members[k]];
+                for (const std::uint32_t p : groups->patchesOf(members[k]))
+                    patchPower.push_back(groupShare * g.patches[p].area / groups->area[members[k]]);
+            }
+            const ShotTargets targets = shotTargets(*geometry, shooter, patchPower);
+            const std::vector<double> share = memberShares(g, shooter, patchPower);
+            const int penumbraRays = penumbraRaysFor(targets, powerShare);
+            parallelFor(f.size(), 256, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t j = begin; j < end; ++j) f[j] = receiverToShooter(g, targets, shooter, j, share, penumbraRays);
+            });
+        } else {
+            // One group that is not planar: its radiosity is uniform, so its light leaves its
+            // members by area.
+            ShotTargets targets = shotTargets(*geometry, shooter, {});
+            targets.normal.reserve(targets.member.size());
+            const auto members = g.groups.group(shooter);
+            for (const std::uint32_t k : targets.member) targets.normal.push_back(g.polygons[members[k]].normal);
+            const int penumbraRays = penumbraRaysFor(targets, powerShare);
+            parallelFor(f.size(), 64, [&](std::size_t begin, std::size_t end) {
+                for (std::size_t j = begin; j < end; ++j) f[j] = receiverToPatchGroup(g, targets, shooter, j, penumbraRays);
+            });
+        }
+        // A receiving group gathers its patches' light by area: F_{D->S} = sum_{q in D} A_q F_{q->S} / A_D.
+        std::fill(toShooter.begin(), toShooter.end(), 0.0);
+        for (std::size_t q = 0; q < f.size(); ++q) toShooter[groups->groupOf[q]] += g.patches[q].area * f[q];
+        for (std::size_t d = 0; d < toShooter.size(); ++d)
+            toShooter[d] = groups->area[d] > 0 ? toShooter[d] / groups->area[d] : 0.0;
     };
 }
 

@@ -71,6 +71,18 @@ TEST_CASE("above the threshold the default is hierarchical, and the reason says 
     CHECK(contains(classroom.reason, "hierarchical above 3,000 patches"));
 }
 
+TEST_CASE("with patch groups the default is progressive refinement over them, however many") {
+    for (const std::size_t groups : {std::size_t{75}, kProgressiveMaxPatches, kProgressiveMaxPatches + 1, std::size_t{26'264}}) {
+        const MethodChoice choice = chooseDefaultMethodForGroups(groups, 4 * groups);
+        CHECK(choice.method == SolverMethod::Progressive);  // hierarchical takes no groups
+        CHECK_FALSE(methodInfo(choice.method).traits.formFactorMatrix);
+        INFO(choice.reason);
+        CHECK(contains(choice.reason, "progressive refinement over the groups"));
+        CHECK(contains(choice.reason, "takes no groups"));
+    }
+    CHECK(contains(chooseDefaultMethodForGroups(75, 3103).reason, "3,103 patches in 75 groups: "));
+}
+
 TEST_CASE("no default method builds a form-factor matrix, however large the mesh") {
     for (const std::size_t patches : {std::size_t{24}, kProgressiveMaxPatches, std::size_t{26'264}, std::size_t{1'000'000}})
         CHECK_FALSE(methodInfo(chooseDefaultMethod(patches).method).traits.formFactorMatrix);

@@ -1,8 +1,8 @@
 // Patches grouped into unknowns of about the requested area (issue #20 item 5, step B): on curved,
 // finely tessellated surfaces the group count follows the requested area, every patch is in one
-// group and the area is kept; the grouped system keeps the physics: inside a closed furnace
-// B = E / (1 - rho) on every patch (the closed form), and a lit sphere's irradiance per group is the
-// ungrouped solution's over the same patches. Scenes from tests/data/make_grouping_scenes.py.
+// group and the area is kept; the grouped system keeps the physics, gathered (Gauss-Seidel) or shot
+// (progressive refinement): inside a closed furnace B = E / (1 - rho) on every patch (the closed
+// form), and a lit sphere's irradiance per group is the ungrouped solution's over the same patches. Scenes from tests/data/make_grouping_scenes.py.
 // ctest-labels: threads
 #include <doctest/doctest.h>
 
@@ -106,6 +106,56 @@ void checkGroupedFurnace(const Scene& scene, const PatchMesh& mesh, std::shared_
     CHECK(absorbed == relativeTo(emitted, deviation + 1e-5));
 }
 
+/// The same furnace solved by grouped progressive refinement (makeGroupedSolver's shots): the
+/// shots' columns F_DC, all of them, must give every group's row sum 1 to the kernels' accuracy,
+/// and the shooting must converge to B = 1 / (1 - rho) on every patch with the power absorbed that
+/// was emitted. With visibility rays too: inside a convex furnace every ray between a receiver and a
+/// curved group's members must get through (none caught on the group's own facets near its ends).
+void checkProgressiveFurnace(const Scene& scene, const PatchMesh& mesh, std::shared_ptr<const PatchGroups> groups,
+                             double rho, int visibilityRays) {
+    SolverOptions options;
+    options.formFactors.visibilityRays = visibilityRays;
+    // Blocks of one cell: every group shoots alone, with its patch's polygon if it has one patch.
+    const ProgressiveShooters shooters = groupShooters(mesh, *groups, 1);
+    REQUIRE(shooters.size() == groups->size());
+    const GroupShotFormFactors shot = makeRayCastPatchGroupShotFormFactors(scene, mesh, groups, shooters, options);
+    std::vector<double> rowSum(groups->size(), 0.0), column(groups->size());
+    for (std::size_t c = 0; c < shooters.size(); ++c) {
+        shot(c, std::vector<double>{1.0}, 1.0, column);
+        for (std::size_t d = 0; d < groups->size(); ++d) rowSum[d] += column[d];
+    }
+    double deviation = 0;
+    for (const double sum : rowSum) deviation = std::max(deviation, std::abs(sum - 1));
+    MESSAGE(mesh.size() << " patches in " << groups->size() << " groups, " << visibilityRays
+                        << " rays: shot row sums within " << deviation << " of 1");
+    REQUIRE(deviation < 1e-2);
+
+    auto solver = makeGroupedSolver(SolverMethod::Progressive, scene, mesh, groups, options);
+    CHECK(solver->method() == SolverMethod::Progressive);
+    std::size_t shots = 0;
+    while (solver->lastStats().residual > 1e-9 && shots < 20000) {
+        const IterationStats stats = solver->step();
+        ++shots;
+        REQUIRE(stats.shooter >= 0);  // a patch of the shooting group
+        REQUIRE(static_cast<std::size_t>(stats.shooter) < mesh.size());
+    }
+    MESSAGE(shots << " shots to unshot power 1e-9");
+    REQUIRE(solver->lastStats().residual <= 1e-9);
+    const double expected = 1 / (1 - rho);
+    const double tolerance = rho * deviation / (1 - rho * (1 + deviation)) + 1e-5;
+    REQUIRE(solver->solution().size() == mesh.size());
+    double absorbed = 0, emitted = 0, worst = 0;
+    for (std::size_t p = 0; p < mesh.size(); ++p) {
+        const double b = solver->solution()[p].x;
+        worst = std::max(worst, std::abs(b / expected - 1));
+        CHECK(b == relativeTo(expected, tolerance));
+        absorbed += (1 - rho) * mesh.patches[p].area * b;
+        emitted += mesh.patches[p].area;
+    }
+    MESSAGE("worst patch off B = E / (1 - rho) by " << worst);
+    CHECK(absorbed == relativeTo(emitted, deviation + 1e-5));
+}
+
 } // namespace
 
 TEST_CASE("rounded cube and sphere of thousands of triangles: groups follow the requested area") {
@@ -183,7 +233,24 @@ TEST_CASE("furnace inside a grouped bevelled box: B = E / (1 - rho) on every pat
     checkGroupedFurnace(scene, mesh, groups, 0.5);
 }
 
-TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over the same patches") {
+TEST_CASE("grouped progressive refinement: furnaces inside the grouped sphere and bevelled box give B = E / (1 - rho)") {
+    {
+        const Scene scene = loadGrouping("furnace_sphere.gltf");
+        const PatchMesh mesh = meshAt(scene, 1.0);
+        auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 1.0));
+        checkProgressiveFurnace(scene, mesh, groups, 0.5, 0);
+        checkProgressiveFurnace(scene, mesh, groups, 0.5, 16);
+    }
+    {
+        const Scene scene = loadGrouping("bevelled_box_furnace.gltf");
+        const PatchMesh mesh = meshAt(scene, 0.2);
+        auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 0.2));
+        checkProgressiveFurnace(scene, mesh, groups, 0.5, 0);
+        checkProgressiveFurnace(scene, mesh, groups, 0.5, 16);
+    }
+}
+
+TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over the same patches, shot or gathered") {
     const Scene scene = loadGrouping("sphere_room.gltf");
     const std::size_t sphere = scene.findSurface("sphere");
     const double area = 0.25;
@@ -193,37 +260,50 @@ TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over t
     options.formFactors.visibilityRays = 4;  // the sphere shadows the floor
     auto grouped = makeGroupedSolver(SolverMethod::GaussSeidel, scene, mesh, groups, options);
     auto ungrouped = makeGaussSeidelSolver(scene, mesh, options, nullptr);
+    auto shooting = makeGroupedSolver(SolverMethod::Progressive, scene, mesh, groups, options);
     for (Solver* solver : {grouped.get(), ungrouped.get()})
         for (int k = 0; k < 1000 && solver->step().residual > 1e-7; ++k) {
         }
+    for (int k = 0; k < 100000 && shooting->step().residual > 1e-6; ++k) {
+    }
     MESSAGE("sphere: " << mesh.surfaceFirstPatch[sphere + 1] - mesh.surfaceFirstPatch[sphere] << " patches in "
                        << groupsOf(*groups, sphere) << " groups");
     // The sphere is convex and emits nothing, so its B = rho E. A group's E is the area-weighted mean
     // of its patches' E with B held constant over each other group: with the lamp and the walls
     // ungrouped-sized, only light that left the sphere and came back differs.
     const double rho = 0.5;
-    double largest = 0, poweredGrouped = 0, poweredUngrouped = 0;
+    double largest = 0, largestShot = 0, poweredGrouped = 0, poweredShot = 0, poweredUngrouped = 0;
     for (std::uint32_t g = groups->surfaceFirstGroup[sphere]; g < groups->surfaceFirstGroup[sphere + 1]; ++g) {
         double power = 0;
         for (const std::uint32_t p : groups->patchesOf(g)) power += mesh.patches[p].area * ungrouped->solution()[p].x;
         const double ungroupedE = power / groups->area[g] / rho;
         const double groupedE = grouped->solution()[groups->patchesOf(g)[0]].x / rho;
+        const double shotE = shooting->solution()[groups->patchesOf(g)[0]].x / rho;
         largest = std::max(largest, std::abs(groupedE / ungroupedE - 1));
+        largestShot = std::max(largestShot, std::abs(shotE / ungroupedE - 1));
         CHECK(groupedE == relativeTo(ungroupedE, 0.01));
+        // Progressive refinement computes the same F_CD by its own quadrature: shots from the
+        // receiving patches' Gauss points and fresh visibility rays per shot.
+        CHECK(shotE == relativeTo(ungroupedE, 0.02));
         poweredGrouped += groups->area[g] * groupedE;
+        poweredShot += groups->area[g] * shotE;
         poweredUngrouped += power / rho;
     }
-    MESSAGE("largest relative difference of a group's irradiance: " << largest);
+    MESSAGE("largest relative difference of a group's irradiance: " << largest << " gauss-seidel, " << largestShot
+                                                                     << " progressive");
     CHECK(poweredGrouped == relativeTo(poweredUngrouped, 0.002));
+    CHECK(poweredShot == relativeTo(poweredUngrouped, 0.01));
 }
 
-TEST_CASE("radiant solve --group-patches reports groups as the unknowns and refuses a method without a matrix") {
+TEST_CASE("radiant solve --group-patches shoots the groups by default, reports them as the unknowns, and hierarchical refuses them") {
     const std::string file = "'" + std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf'";
     const test::CommandRun run = test::runRadiant("solve " + file + " --group-patches --max-patch-area 1 --json -");
     INFO(run.err);
     REQUIRE(run.status == 0);
     const nlohmann::json report = nlohmann::json::parse(run.out);
-    CHECK(report["method"] == "gauss-seidel");
+    CHECK(report["method"] == "progressive");
+    CHECK(run.err.find("radiant: method: progressive (567 patches in 63 groups: progressive refinement over the groups") !=
+          std::string::npos);
     CHECK(report["unknowns"].get<std::size_t>() < report["patches"].get<std::size_t>());
     const nlohmann::json& sphere = report["surfaces"].back();
     REQUIRE(sphere["name"] == "sphere");
@@ -233,5 +313,24 @@ TEST_CASE("radiant solve --group-patches reports groups as the unknowns and refu
     const test::CommandRun refused =
         test::runRadiant("solve " + file + " --group-patches --method hierarchical --max-patch-area 1");
     CHECK(refused.status == 2);
-    CHECK(refused.err.find("jacobi or gauss-seidel only, not hierarchical") != std::string::npos);
+    CHECK(refused.err.find("jacobi, gauss-seidel or progressive only, not hierarchical") != std::string::npos);
+}
+
+TEST_CASE("with --group-patches the default method counts the groups, not the patches") {
+    // The rounded cube's room at 1 m^2: 3,103 patches, above progressive refinement's 3,000, so
+    // hierarchical ungrouped; 75 groups, so progressive refinement grouped. Only the choice is run.
+    const std::string file = "'" + std::string(RADIANT_TEST_DATA_DIR) + "/grouping/rounded_cube_room.gltf'";
+    const test::CommandRun plain = test::runRadiant("solve " + file + " --max-patch-area 1 --max-iterations 1 --json -");
+    const test::CommandRun grouped =
+        test::runRadiant("solve " + file + " --group-patches --max-patch-area 1 --max-iterations 1 --json -");
+    INFO(plain.err);
+    INFO(grouped.err);
+    REQUIRE(plain.status == 0);
+    REQUIRE(grouped.status == 0);
+    CHECK(nlohmann::json::parse(plain.out)["method"] == "hierarchical");
+    const nlohmann::json report = nlohmann::json::parse(grouped.out);
+    CHECK(report["method"] == "progressive");
+    CHECK(report["patches"] == 3103);
+    CHECK(report["unknowns"] == 75);
+    CHECK(report["method_reason"].get<std::string>().find("3,103 patches in 75 groups") != std::string::npos);
 }

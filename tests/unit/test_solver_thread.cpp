@@ -205,6 +205,51 @@ TEST_CASE("a material edit keeps a paused solve paused until the next step, and 
     CHECK_FALSE(live.snapshot().running);
 }
 
+TEST_CASE("the lab's patch groups: each mesh grouped at its area, the default chosen by the groups, solved as the command line does") {
+    auto scene = std::make_shared<const Scene>(
+        loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf").scene);
+    SolverThread thread;
+    thread.send(command::LoadScene{scene, MeshingOptions{1.0}});
+    thread.send(command::SetGrouping{true});
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    auto snapshot = thread.snapshot();
+    REQUIRE(snapshot->error.empty());
+    REQUIRE(snapshot->groups);
+    REQUIRE(snapshot->mesh);
+    CHECK(snapshot->mesh->size() == 567);
+    CHECK(snapshot->groups->size() == 63);  // as `radiant solve --group-patches --max-patch-area 1`
+    CHECK(snapshot->method == SolverMethod::Progressive);
+    INFO(snapshot->methodReason);
+    CHECK(snapshot->methodReason.find("567 patches in 63 groups") != std::string::npos);
+    CHECK(snapshot->stats.residual < snapshot->tolerance);
+    REQUIRE(snapshot->radiosity.size() == snapshot->mesh->size());
+    for (std::size_t g = 0; g < snapshot->groups->size(); ++g) {
+        const auto patches = snapshot->groups->patchesOf(g);
+        for (const std::uint32_t p : patches) CHECK(snapshot->radiosity[p] == snapshot->radiosity[patches[0]]);
+    }
+
+    thread.send(command::Remesh{MeshingOptions{0.2}});  // the new mesh is grouped at its own area
+    thread.waitUntilIdle();
+    snapshot = thread.snapshot();
+    REQUIRE(snapshot->groups);
+    CHECK(snapshot->groups->groupOf.size() == snapshot->mesh->size());
+    CHECK(snapshot->groups->size() == 312);
+
+    thread.send(command::SetGrouping{false});
+    thread.waitUntilIdle();
+    snapshot = thread.snapshot();
+    CHECK_FALSE(snapshot->groups);
+    CHECK(snapshot->methodReason.find("810 patches: progressive refinement") != std::string::npos);
+
+    // A picked method that takes no groups says so.
+    thread.send(command::SetMethod{SolverMethod::Hierarchical});
+    thread.send(command::SetGrouping{true});
+    thread.waitUntilIdle();
+    snapshot = thread.snapshot();
+    CHECK(snapshot->error.find("jacobi, gauss-seidel or progressive only, not hierarchical") != std::string::npos);
+}
+
 TEST_CASE("hierarchical solvers publish their links as segments between the elements they join, others none") {
     auto plates = std::make_shared<const Scene>(loadScene("parallel-plates").scene);
     SolverThread thread;
