@@ -4,7 +4,6 @@
 // are drawn from their fronts only, so no wall seen from behind hides the room.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <functional>
 #include <glm/geometric.hpp>
@@ -20,26 +19,20 @@
 #include "render/OffscreenRender.h"
 #include "render/PatchRenderer.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 namespace command = radiant::app::command;
 
+using radiant::test::frameUntil;
+
 namespace {
 
 void requireDisplay() {
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
-
-void frameUntil(Lab& lab, const std::function<bool(const app::Snapshot&)>& done, double seconds = 60) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        if (done(*lab.snapshot())) return;
-    }
-    FAIL("the lab did not reach the expected state within " << seconds << " s; error '" << lab.snapshot()->error << "'");
 }
 
 /// Mean colour (0..255 per channel) of a (2r+1)^2 block of pixels around `centre`.
@@ -99,7 +92,7 @@ TEST_CASE("a closed room opens showing its floor from the home camera, and a cli
     // A click there probes the floor from above: a reading with the floor's light.
     REQUIRE(lab.clickAt({pixel.x, pixel.y}));
     const std::uint64_t solved = lab.snapshot()->generation;
-    frameUntil(lab, [&](const app::Snapshot&) { return lab.probeGeneration() == solved && lab.probeReading(); }, 30);
+    frameUntil(lab, [&](const app::Snapshot&) { return lab.probeGeneration() == solved && lab.probeReading(); });
     const ProbeReading reading = *lab.probeReading();
     CHECK(lab.snapshot()->scene->surfaces[reading.at.surface].name == "floor");
     CHECK(reading.normal.y == doctest::Approx(1.0).scale(0));

@@ -5,7 +5,6 @@
 // methods converged on one mesh draw the same picture in both halves.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
@@ -18,6 +17,7 @@
 #include "app/ui/Theme.h"
 #include "render/ColourScale.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::ComparisonSettings;
@@ -25,6 +25,8 @@ using radiant::app::ComparisonView;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 namespace command = radiant::app::command;
+
+using radiant::test::frameUntil;
 
 namespace {
 
@@ -43,15 +45,6 @@ LabOptions options(const char* scene, double patchArea) {
     o.maxPatchArea = patchArea;
     o.runOnStart = false;
     return o;
-}
-
-void frameUntil(Lab& lab, const std::function<bool()>& done, double seconds = 90) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        if (done()) return;
-    }
-    FAIL("the lab did not reach the expected state within " << seconds << " s");
 }
 
 bool converged(const std::shared_ptr<const app::Snapshot>& s) {
@@ -141,7 +134,7 @@ TEST_CASE("comparison mode: Jacobi and Gauss-Seidel on two meshes of the furnace
     // A click in B's half probes the same scene; the probe reads both solutions there.
     const glm::dvec2 click{halves[1].x + halves[1].width / 2.0, halves[1].y + halves[1].height / 2.0};
     REQUIRE(lab.clickAt(click));
-    frameUntil(lab, [&] { return lab.probeGeneration() == lab.snapshot()->generation && lab.probeReading() && lab.secondProbeReading(); }, 30);
+    frameUntil(lab, [&] { return lab.probeGeneration() == lab.snapshot()->generation && lab.probeReading() && lab.secondProbeReading(); });
     const ProbeReading readingA = *lab.probeReading();
     const ProbeReading readingB = *lab.secondProbeReading();
     CHECK(glm::length(readingA.at.point - readingB.at.point) < 1e-9);

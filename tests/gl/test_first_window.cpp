@@ -4,7 +4,6 @@
 #include <doctest/doctest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdlib>
 #include <glm/vec3.hpp>
 #include <string>
@@ -12,6 +11,7 @@
 #include "app/Lab.h"
 #include "app/solver/Snapshot.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using radiant::app::Lab;
 using radiant::app::LabOptions;
@@ -121,13 +121,9 @@ void checkCornellImage(const ImageRgb8& image, const radiant::render::Camera& ca
     CHECK(outside.max() < 40);
 }
 
-/// The solver thread meshes the scene while the window already draws: wait (bounded) until a frame
-/// has drawn the mesh.
-void waitForMesh(Lab& lab) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
-    while (!(lab.snapshot() && lab.snapshot()->mesh) && std::chrono::steady_clock::now() < deadline) lab.frame();
-    REQUIRE_MESSAGE(lab.snapshot()->mesh, "the solver thread did not mesh the Cornell box within 60 s");
-}
+/// The solver thread meshes the scene while the window already draws: wait until a frame has drawn
+/// the mesh.
+void waitForMesh(Lab& lab) { radiant::test::frameUntil(lab, [&] { return lab.snapshot() && lab.snapshot()->mesh; }, "a mesh"); }
 
 } // namespace
 

@@ -24,11 +24,14 @@
 #include "radiometry/units/Quantity.h"
 #include "render/Screenshot.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 namespace command = radiant::app::command;
+
+using radiant::test::frameUntil;
 
 namespace {
 
@@ -49,19 +52,6 @@ LabOptions coarseCornell() {
     options.maxPatchArea = kCoarsePatchArea;
     options.runOnStart = false;
     return options;
-}
-
-/// Draws frames until `done` holds; fails the test after `seconds`.
-void frameUntil(Lab& lab, const std::function<bool(const app::Snapshot&)>& done, double seconds = 60) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        if (done(*lab.snapshot())) return;
-    }
-    const app::Snapshot& s = *lab.snapshot();
-    FAIL("the lab did not reach the expected state within " << seconds << " s: generation " << s.generation
-         << ", patches " << (s.mesh ? s.mesh->size() : 0) << ", solver builds " << s.solverBuilds << ", iteration "
-         << s.stats.iteration << ", running " << s.running << ", error '" << s.error << "'");
 }
 
 void waitForSolver(Lab& lab) {
@@ -186,7 +176,7 @@ TEST_CASE("a click on the floor probes the point as `radiant probe` does with th
     const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
     REQUIRE(lab.clickAt({pixel.x, pixel.y}));
     const std::uint64_t solved = lab.snapshot()->generation;
-    frameUntil(lab, [&](const app::Snapshot&) { return lab.probeGeneration() == solved && lab.probeReading(); }, 30);
+    frameUntil(lab, [&](const app::Snapshot&) { return lab.probeGeneration() == solved && lab.probeReading(); });
     const ProbeReading reading = *lab.probeReading();
     const Scene& scene = *lab.snapshot()->scene;
     CHECK(scene.surfaces[reading.at.surface].name == "floor");
@@ -369,7 +359,7 @@ TEST_CASE("a click with hierarchical radiosity singles out the links the point g
     const glm::dvec3 floorPoint{0.42, 0.0, 0.12};  // in front of the tall block
     const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
     REQUIRE(lab.clickAt({pixel.x, pixel.y}));
-    frameUntil(lab, [](const app::Snapshot& s) { return s.focusLinkSegments && !s.focusLinkSegments->empty(); }, 30);
+    frameUntil(lab, [](const app::Snapshot& s) { return s.focusLinkSegments && !s.focusLinkSegments->empty(); });
     const app::Snapshot& focused = *lab.snapshot();
     CHECK(focused.focusLevels >= 1);
     // Every one starts at the picked point, on the floor.

@@ -3,7 +3,6 @@
 // gives back the scene as it was: the same camera, the same solve, the same probe.
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <functional>
@@ -12,25 +11,19 @@
 #include "app/Lab.h"
 #include "app/lessons/Lesson.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
+
+using radiant::test::frameUntil;
 
 namespace {
 
 void requireDisplay() {
     const char* display = std::getenv("DISPLAY");
     if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
-
-void frameUntil(Lab& lab, const std::function<bool()>& done, double seconds = 60) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        if (done()) return;
-    }
-    FAIL("the lab did not reach the expected state within " << seconds << " s");
 }
 
 glm::dvec3 colourAt(const render::ImageRgb8& image, const glm::dvec3& pixel, int r = 2) {

@@ -3,7 +3,6 @@
 // top-right corner; tone-mapped, no such bar is there (so the search below can fail).
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -13,6 +12,7 @@
 #include "app/solver/SolverThread.h"
 #include "render/ColourScale.h"
 #include "render/Screenshot.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::Lab;
@@ -48,13 +48,8 @@ std::optional<BarFound> findColourBar(const render::ImageRgb8& image, int minLen
 }
 
 void frameUntilConverged(Lab& lab) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(90);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        const app::Snapshot& s = *lab.snapshot();
-        if (s.mesh && s.solverBuilds >= 1 && !s.running && s.stats.iteration > 0) return;
-    }
-    FAIL("the lab did not converge within 90 s");
+    radiant::test::frameUntil(lab, [](const app::Snapshot& s) { return s.mesh && s.solverBuilds >= 1 && !s.running && s.stats.iteration > 0; },
+                              "a converged solve");
 }
 
 } // namespace

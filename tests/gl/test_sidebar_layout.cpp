@@ -3,7 +3,6 @@
 // (app/ui/ClippedText.h reads both from ImGui's own layout of the frame just drawn).
 #include <doctest/doctest.h>
 
-#include <chrono>
 #include <cstdlib>
 #include <functional>
 #include <string>
@@ -14,21 +13,15 @@
 #include "app/Lab.h"
 #include "app/ui/ClippedText.h"
 #include "render/camera/Camera.h"
+#include "tests/gl/FrameUntil.h"
 
 using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 
-namespace {
+using radiant::test::frameUntil;
 
-void frameUntil(Lab& lab, const std::function<bool()>& done, double seconds) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
-    while (std::chrono::steady_clock::now() < deadline) {
-        lab.frame();
-        if (done()) return;
-    }
-    FAIL("the lab did not reach the expected state within " << seconds << " s");
-}
+namespace {
 
 /// Draws a few frames (a focus request applies on the next one; tables settle their columns on the
 /// one after), then returns what the last of them cut off.
@@ -58,12 +51,12 @@ TEST_CASE("every panel and lecture demo fits the sidebar at UI scales 1.0, 1.5 a
     options.vsync = false;
     options.maxPatchArea = 0.05;  // about a hundred patches: the layout, not the solve, is under test
     Lab lab(options);
-    frameUntil(lab, [&] { const auto s = lab.snapshot(); return s->mesh && s->stats.iteration > 0 && !s->running; }, 60);
+    frameUntil(lab, [&] { const auto s = lab.snapshot(); return s->mesh && s->stats.iteration > 0 && !s->running; });
     // A probed point fills the Probe, Hemisphere and Integrals panels with their readings and tables.
     const glm::dvec3 floorPoint{0.42, 0.0, 0.12};
     const glm::dvec3 pixel = render::projectToPixel(lab.camera(), lab.sceneViewport(), floorPoint);
     REQUIRE(lab.clickAt({pixel.x, pixel.y}));
-    frameUntil(lab, [&] { return lab.probeReading().has_value(); }, 30);
+    frameUntil(lab, [&] { return lab.probeReading().has_value(); });
 
     // One lab at three scales, as the Display panel's slider changes it (a lab per scale would also
     // reconnect to the X server while it resets after the previous one left).
