@@ -282,6 +282,20 @@ void SolverThread::requeueMeshingUnlessSuperseded(const MeshingOptions& meshing)
     queue_.push_front(command::Remesh{meshing});
 }
 
+void SolverThread::startNewSystem(State& state) {
+    if (!state.methodPicked) {
+        MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
+        state.method = choice.method;
+        state.methodReason = std::move(choice.reason);
+    }
+    state.solver.reset();
+    state.running = false;
+    state.pendingSteps = 0;
+    state.history.clear(state.method);
+    publish(state);  // show the new mesh (emission only) while form factors compute
+    ensureSolver(state);
+}
+
 void SolverThread::apply(State& state, SolverCommand& command) {
     std::visit(
         [&](auto& c) {
@@ -332,17 +346,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.groupPatches = c.groupPatches;
                 if (!state.mesh) return;  // the next mesh is grouped
                 state.groups = groupsFor(state.groupPatches, *state.mesh, state.meshing);
-                if (!state.methodPicked) {
-                    MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
-                    state.method = choice.method;
-                    state.methodReason = std::move(choice.reason);
-                }
-                state.solver.reset();
-                state.running = false;
-                state.pendingSteps = 0;
-                state.history.clear(state.method);
-                publish(state);
-                ensureSolver(state);
+                startNewSystem(state);
             } else if constexpr (std::is_same_v<C, command::SetMaterial>) {
                 if (!state.scene || c.surface >= state.scene->surfaces.size())
                     throw RadiantError({"", "set material"}, "no surface " + std::to_string(c.surface));
@@ -423,18 +427,8 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 const bool pickDoesNotFit = std::is_same_v<C, command::LoadScene> &&
                                             methodInfo(state.method).traits.formFactorMatrix &&
                                             formFactorMatrixPeakBytes(state.mesh->size()) > options_.matrixBudgetBytes;
-                if (!state.methodPicked || pickDoesNotFit) {
-                    state.methodPicked = false;
-                    MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
-                    state.method = choice.method;
-                    state.methodReason = std::move(choice.reason);
-                }
-                state.solver.reset();
-                state.running = false;
-                state.pendingSteps = 0;
-                state.history.clear(state.method);
-                publish(state);  // show the new mesh (emission only) while form factors compute
-                ensureSolver(state);
+                if (pickDoesNotFit) state.methodPicked = false;
+                startNewSystem(state);
             }
         },
         command);

@@ -54,6 +54,9 @@ private:
     void workerLoop(const std::stop_token& stop);
     void apply(State& state, SolverCommand& command);
     void ensureSolver(State& state);
+    /// After a new mesh or grouping: the default method unless the user picked one, a fresh solver
+    /// and history, published at once.
+    void startNewSystem(State& state);
     void publish(State& state);
     /// Adds what the display's overlays need (links, importance) to a snapshot being published.
     static void publishOverlays(State& state, Snapshot& s);

@@ -100,6 +100,13 @@ glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
 }
 
 /// Distance from x to the planar convex polygon (m).
+/// The largest distance from a polygon's centroid to its corners.
+double circumradius(const PatchPolygon& polygon) {
+    double radius = 0;
+    for (const glm::dvec3& corner : polygon.corners()) radius = std::max(radius, glm::length(corner - polygon.centroid));
+    return radius;
+}
+
 double distanceToPolygon(const PatchPolygon& p, const glm::dvec3& x) {
     const double height = glm::dot(x - p.centroid, p.normal);
     const glm::dvec3 projected = x - height * p.normal;
@@ -459,16 +466,8 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
     geometry->shooterSurface = shooters.surface;
     geometry->shooterFace = shooters.face;
     geometry->groups = shooters;
-    for (const PatchPolygon& outline : shooters.polygons) {
-        double radius = 0;
-        for (const glm::dvec3& corner : outline.corners()) radius = std::max(radius, glm::length(corner - outline.centroid));
-        geometry->shooterRadius.push_back(radius);
-    }
-    for (const PatchPolygon& patch : geometry->polygons) {
-        double radius = 0;
-        for (const glm::dvec3& corner : patch.corners()) radius = std::max(radius, glm::length(corner - patch.centroid));
-        geometry->patchRadius.push_back(radius);
-    }
+    for (const PatchPolygon& outline : shooters.polygons) geometry->shooterRadius.push_back(circumradius(outline));
+    for (const PatchPolygon& patch : geometry->polygons) geometry->patchRadius.push_back(circumradius(patch));
     geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
@@ -496,11 +495,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
     geometry->polygons.resize(mesh.size());
     for (std::size_t i = 0; i < mesh.size(); ++i) geometry->polygons[i] = mesh.polygon(i);
     geometry->patches = mesh.patches;
-    for (const PatchPolygon& patch : geometry->polygons) {
-        double radius = 0;
-        for (const glm::dvec3& corner : patch.corners()) radius = std::max(radius, glm::length(corner - patch.centroid));
-        geometry->patchRadius.push_back(radius);
-    }
+    for (const PatchPolygon& patch : geometry->polygons) geometry->patchRadius.push_back(circumradius(patch));
     // The shot geometry's groups are the shooters' patches: each shooter's groups' patches, in order.
     geometry->groups.first.push_back(0);
     for (std::size_t s = 0; s < shooters.size(); ++s) {
@@ -511,11 +506,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
     geometry->shooters = shooters.polygons;
     geometry->shooterSurface = shooters.surface;
     geometry->shooterFace = shooters.face;
-    for (const PatchPolygon& outline : shooters.polygons) {
-        double radius = 0;
-        for (const glm::dvec3& corner : outline.corners()) radius = std::max(radius, glm::length(corner - outline.centroid));
-        geometry->shooterRadius.push_back(radius);
-    }
+    for (const PatchPolygon& outline : shooters.polygons) geometry->shooterRadius.push_back(circumradius(outline));
     geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
