@@ -88,10 +88,19 @@ FrameVariants frameVariants(const DisplayModel& model) {
 struct PatchRenderer::Gpu {
     std::array<std::unique_ptr<gl::ShaderProgram>, PatchShaderVariant::kCount> programs;  // compiled on first need
     gl::ShaderProgram lineProgram{"wire.vert.glsl", "wire.frag.glsl"};
-    PatchTriangles triangles;  // CPU copy: which patch and smoothing vertex each drawn vertex shows
+    PatchTriangles triangles;  // CPU copy: which patch and smoothing vertex each vertex shows
+    // Indexed, one vertex per patch corner: the triangles as every variant without edges draws them.
+    gl::Buffer corners;
+    gl::Buffer cornerColours;  // DisplayVertex per corner
+    gl::Buffer cornerIndices;
+    gl::VertexArray cornerLayout;
+    // Unindexed, with barycentric edges: the wireframe and the shooter's outline. Their colours are
+    // uploaded only when drawn: all while the wireframe shows, else the outlined patch's.
     gl::Buffer vertices;
     gl::Buffer colours;  // DisplayVertex per drawn vertex
     gl::VertexArray layout;
+    bool edgeColoursCurrent = false;  // colours holds every drawn vertex's current colour
+    std::int64_t edgeColoursOf = -1;  // else the patch whose drawn vertices it holds current, or -1
     // Grid faces: one quad each, coloured from atlases of per-vertex and per-patch texels.
     gl::Buffer gridVertices;
     gl::VertexArray gridLayout;
@@ -111,7 +120,7 @@ struct PatchRenderer::Gpu {
     bool haveMesh = false;
     std::uint64_t meshGeneration = 0;
     // Reused from one upload to the next: a snapshot a frame while solving.
-    std::vector<DisplayVertex> drawnColours;
+    std::vector<DisplayVertex> drawnColours, cornerColourData;
     std::vector<glm::vec4> colourTexels, tintTexels;
 
     void compile(const PatchShaderVariant& variant) {
@@ -125,13 +134,19 @@ struct PatchRenderer::Gpu {
     }
     void uploadMesh(const DisplayModel& model, const PatchMesh& mesh);
     void uploadColours(const DisplayModel& model);
+    void uploadEdgeColours(const DisplayModel& model, std::int64_t patch);
 };
 
 void PatchRenderer::Gpu::uploadMesh(const DisplayModel& model, const PatchMesh& mesh) {
     const FaceGrids& grids = model.grids();
     triangles = patchTriangles(mesh, grids, model.smoothing());
+    corners.setData(std::span<const CornerVertex>(triangles.corners));
+    cornerIndices.setData(std::span<const std::uint32_t>(triangles.cornerIndices));
+    cornerColours.setData(std::span<const DisplayVertex>(std::vector<DisplayVertex>(triangles.corners.size())), GL_DYNAMIC_DRAW);
     vertices.setData(std::span<const PatchVertex>(triangles.vertices));
     colours.setData(std::span<const DisplayVertex>(std::vector<DisplayVertex>(triangles.vertices.size())), GL_DYNAMIC_DRAW);
+    edgeColoursCurrent = false;
+    edgeColoursOf = -1;
     const std::vector<GridVertex> quads = gridQuads(grids);
     gridVertices.setData(std::span<const GridVertex>(quads));
     gridVertexCount = static_cast<GLsizei>(quads.size());
@@ -153,8 +168,10 @@ void PatchRenderer::Gpu::uploadMesh(const DisplayModel& model, const PatchMesh& 
 
 void PatchRenderer::Gpu::uploadColours(const DisplayModel& model) {
     const DisplayColours& c = model.colours();
-    fillDisplayVertices(triangles, c, drawnColours);
-    colours.setSubData(0, std::span<const DisplayVertex>(drawnColours));
+    fillDisplayVertices(triangles.cornerPatch, triangles.cornerSmoothing, c, cornerColourData);
+    cornerColours.setSubData(0, std::span<const DisplayVertex>(cornerColourData));
+    edgeColoursCurrent = false;
+    edgeColoursOf = -1;
     const FaceGrids& grids = model.grids();
     if (grids.grids.empty()) return;
     fillAtlasTexels(grids, model.smoothing(), c, colourTexels, tintTexels);
@@ -164,8 +181,26 @@ void PatchRenderer::Gpu::uploadColours(const DisplayModel& model) {
     tintAtlas.upload(tintTexels);
 }
 
+/// `patch` < 0: every drawn vertex's colour; else that patch's vertices only.
+void PatchRenderer::Gpu::uploadEdgeColours(const DisplayModel& model, std::int64_t patch) {
+    std::size_t first = 0, end = triangles.drawnPatch.size();
+    if (patch >= 0) {
+        first = triangles.patchFirstVertex[static_cast<std::size_t>(patch)];
+        end = triangles.patchFirstVertex[static_cast<std::size_t>(patch) + 1];
+    }
+    const std::span<const std::uint32_t> drawnPatch(triangles.drawnPatch), drawnSmoothing(triangles.drawnSmoothing);
+    fillDisplayVertices(drawnPatch.subspan(first, end - first), drawnSmoothing.subspan(first, end - first), model.colours(),
+                        drawnColours);
+    colours.setSubData(first * sizeof(DisplayVertex), std::span<const DisplayVertex>(drawnColours));
+}
+
 PatchRenderer::PatchRenderer() : gpu_(std::make_unique<Gpu>()) {
     Gpu& g = *gpu_;
+    g.cornerLayout.addFloatAttribute(g.corners, 0, 3, sizeof(CornerVertex), offsetof(CornerVertex, position));
+    g.cornerLayout.addFloatAttribute(g.corners, 2, 3, sizeof(CornerVertex), offsetof(CornerVertex, normal));
+    g.cornerLayout.addFloatAttribute(g.cornerColours, 3, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, colour));
+    g.cornerLayout.addFloatAttribute(g.cornerColours, 4, 4, sizeof(DisplayVertex), offsetof(DisplayVertex, tint));
+    g.cornerLayout.setIndexBuffer(g.cornerIndices);
     constexpr std::size_t stride = sizeof(PatchVertex);
     g.layout.addFloatAttribute(g.vertices, 0, 3, stride, offsetof(PatchVertex, position));
     g.layout.addFloatAttribute(g.vertices, 1, 3, stride, offsetof(PatchVertex, edge));
@@ -223,6 +258,10 @@ void PatchRenderer::prepare() {
     if (model_.refreshColours() && g.haveMesh) g.uploadColours(model_);
     const FrameVariants v = frameVariants(model_);
     g.compile(v.triangles);
+    if (model_.settings().wireframe && !g.edgeColoursCurrent && g.haveMesh) {
+        g.uploadEdgeColours(model_, -1);
+        g.edgeColoursCurrent = true;
+    }
     if (g.gridVertexCount > 0) g.compile(v.grids);
     const std::int64_t shooter = model_.shooter();
     if (model_.settings().highlightShooter && shooter >= 0 && static_cast<std::size_t>(shooter) < model_.patchCount()) {
@@ -237,6 +276,10 @@ void PatchRenderer::prepare() {
             }
         } else {
             g.compile(v.outlineTriangles);
+            if (!g.edgeColoursCurrent && g.edgeColoursOf != shooter) {
+                g.uploadEdgeColours(model_, shooter);
+                g.edgeColoursOf = shooter;
+            }
         }
     }
     prepared_ = true;
@@ -302,8 +345,13 @@ void PatchRenderer::draw(const Camera& camera, double aspect) const {
     const auto triangleCount = static_cast<GLsizei>(g.triangles.vertices.size());
     if (triangleCount > 0) {
         useProgram(variants.triangles);
-        g.layout.bind();
-        glDrawArrays(GL_TRIANGLES, 0, triangleCount);
+        if (variants.triangles.edges) {
+            g.layout.bind();
+            glDrawArrays(GL_TRIANGLES, 0, triangleCount);
+        } else {
+            g.cornerLayout.bind();
+            glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(g.triangles.cornerIndices.size()), GL_UNSIGNED_INT, nullptr);
+        }
     }
     if (g.gridVertexCount > 0) {
         useProgram(variants.grids);

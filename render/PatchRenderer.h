@@ -2,8 +2,10 @@
 // Radiosity on screen: the GL drawer of the display model (render/display/DisplayModel.h, which
 // decides every colour, tint, key and legend without GL). It holds the patch mesh on the GPU
 // (triangles, and one light-mapped quad per grid face: render/display/FaceGrids.h), the display
-// colours as vertex attributes and atlas texels, the hierarchical links as lines, and draws them with
-// back faces culled (a face is seen from its front only, so a closed room's near walls vanish).
+// colours as vertex attributes (triangles indexed over each patch's corners; unindexed ones with
+// barycentric edges for the wireframe and the shooter's outline) and atlas texels, the hierarchical
+// links as lines, and draws them with back faces culled (a face is seen from its front only, so a
+// closed room's near walls vanish).
 // Geometry is uploaded when the mesh generation changes; colours when prepare() finds the model
 // recoloured (new solution, exposure key, a colour setting); nothing otherwise.
 // GL-free header; GL objects live in the implementation. Create, use and destroy on the GL thread.

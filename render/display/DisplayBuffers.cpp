@@ -2,11 +2,12 @@
 
 namespace radiant::render {
 
-void fillDisplayVertices(const PatchTriangles& triangles, const DisplayColours& colours, std::vector<DisplayVertex>& out) {
-    out.resize(triangles.drawnPatch.size());
+void fillDisplayVertices(std::span<const std::uint32_t> patchOf, std::span<const std::uint32_t> smoothingOf,
+                         const DisplayColours& colours, std::vector<DisplayVertex>& out) {
+    out.resize(patchOf.size());
     for (std::size_t v = 0; v < out.size(); ++v) {
-        const std::uint32_t patch = triangles.drawnPatch[v];
-        out[v] = {colours.smooth ? colours.vertex[triangles.drawnSmoothing[v]] : colours.patch[patch], colours.tint[patch]};
+        const std::uint32_t patch = patchOf[v];
+        out[v] = {colours.smooth ? colours.vertex[smoothingOf[v]] : colours.patch[patch], colours.tint[patch]};
     }
 }
 

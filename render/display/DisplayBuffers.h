@@ -2,6 +2,8 @@
 // The display colours laid out as the GPU reads them, GL-free: per drawn triangle vertex (colour and
 // tint attributes), and as texels of the grid faces' atlases (FaceGrids.h). The drawer uploads these
 // arrays as they are.
+#include <cstdint>
+#include <span>
 #include <vector>
 
 #include <glm/vec4.hpp>
@@ -19,8 +21,10 @@ struct DisplayVertex {
     Tint tint;         ///< rgb: colour to mix toward; a: amount, +2 when the patch is outlined
 };
 
-/// Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's.
-void fillDisplayVertices(const PatchTriangles& triangles, const DisplayColours& colours, std::vector<DisplayVertex>& out);
+/// Gouraud: each drawn vertex takes its smoothing vertex's colour; flat: its patch's. `patchOf` and
+/// `smoothingOf` name each vertex's (PatchTriangles' drawn or corner arrays).
+void fillDisplayVertices(std::span<const std::uint32_t> patchOf, std::span<const std::uint32_t> smoothingOf,
+                         const DisplayColours& colours, std::vector<DisplayVertex>& out);
 
 /// A tint as an 8-bit texel can hold it: alpha = amount / 2, + 1/2 when outlined (an amount is at
 /// most 0.8: importance, changed and shooter tints combined). patch.frag.glsl decodes it.

@@ -26,15 +26,23 @@ PatchTriangles patchTriangles(const PatchMesh& mesh, const FaceGrids& grids, con
     const std::size_t n = mesh.patches.size();
     PatchTriangles t;
     t.vertices.reserve(n * 6);
+    t.corners.reserve(n * 4);
     t.patchFirstVertex.assign(n + 1, 0);
     for (std::size_t p = 0; p < n; ++p) {
         t.patchFirstVertex[p] = static_cast<std::uint32_t>(t.vertices.size());
         if (grids.patchInGrid[p]) continue;  // drawn by its face's light map
         const Patch& patch = mesh.patches[p];
+        const auto firstCorner = static_cast<std::uint32_t>(t.corners.size());
+        for (std::uint8_t c = 0; c < patch.cornerCount; ++c) {
+            t.corners.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), glm::vec3(patch.normal)});
+            t.cornerPatch.push_back(static_cast<std::uint32_t>(p));
+            t.cornerSmoothing.push_back(smoothing.cornerVertex[p][c]);
+        }
         const auto corner = [&](std::uint8_t c, const glm::vec3& edge) {
             t.vertices.push_back({glm::vec3(mesh.vertices[patch.corners[c]]), edge, glm::vec3(patch.normal)});
             t.drawnPatch.push_back(static_cast<std::uint32_t>(p));
             t.drawnSmoothing.push_back(smoothing.cornerVertex[p][c]);
+            t.cornerIndices.push_back(firstCorner + c);
         };
         // Fan about corner 0. Barycentric coordinate k is 1 at the triangle's vertex k and 0 on the
         // edge opposite; for a fan's inner diagonal (not a patch edge) that coordinate is held at 1,

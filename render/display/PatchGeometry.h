@@ -32,11 +32,27 @@ struct GridVertex {
     glm::vec3 layout;    ///< first atlas row, columns, rows
 };
 
+/// A patch corner as the indexed draw reads it: patch.vert.glsl's attributes 0 and 2.
+struct CornerVertex {
+    glm::vec3 position;  ///< m
+    glm::vec3 normal;    ///< the patch's, unit
+};
+
+/// The same triangles twice. Indexed: one vertex per patch corner, shared by the patch's triangles
+/// (a quad shades 4 vertices, not 6; software GL shades each vertex of a draw on the drawing
+/// thread), for every variant without edges. Unindexed: three vertices per triangle, each carrying
+/// its own barycentric edge coordinates, for the wireframe and the shooter's outline. Corners are
+/// not shared between patches: tint, flat colour and normal are the patch's own.
 struct PatchTriangles {
     std::vector<PatchVertex> vertices;            ///< three per triangle
     std::vector<std::uint32_t> drawnPatch;        ///< per vertex: its patch
     std::vector<std::uint32_t> drawnSmoothing;    ///< per vertex: its smoothing vertex
     std::vector<std::uint32_t> patchFirstVertex;  ///< per patch and one past the last: its vertices
+    std::vector<CornerVertex> corners;            ///< per corner of each patch drawn here
+    std::vector<std::uint32_t> cornerPatch;       ///< per corner: its patch
+    std::vector<std::uint32_t> cornerSmoothing;   ///< per corner: its smoothing vertex
+    /// Three per triangle, into corners: vertices' triangles in the same order and winding.
+    std::vector<std::uint32_t> cornerIndices;
 };
 
 /// The triangles of the patches not in `grids` (fans about corner 0).

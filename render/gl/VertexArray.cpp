@@ -45,4 +45,10 @@ void VertexArray::addIntAttribute(const Buffer& buffer, GLuint location, std::si
                            reinterpret_cast<const void*>(offsetBytes));  // NOLINT
 }
 
+void VertexArray::setIndexBuffer(const Buffer& buffer) {
+    // The element binding is the vertex array's own state: nothing else to put back.
+    const ScopedVertexArray array(id_);
+    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, buffer.id());
+}
+
 } // namespace radiant::render::gl

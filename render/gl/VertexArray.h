@@ -27,6 +27,9 @@ public:
     /// As addFloatAttribute for one 32-bit signed integer per vertex, read as an `int` shader input.
     void addIntAttribute(const Buffer& buffer, GLuint location, std::size_t strideBytes, std::size_t offsetBytes);
 
+    /// Draws through `buffer`'s indices (glDrawElements): the vertex array records it.
+    void setIndexBuffer(const Buffer& buffer);
+
 private:
     GLuint id_ = 0;
 };

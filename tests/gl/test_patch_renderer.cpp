@@ -38,16 +38,19 @@ void requireDisplay() {
 
 double radiosityOf(int k) { return kStep * k * k; }
 
-/// One grey surface, the unit square in z = 0 facing +z, cut into kPatches columns.
+/// One grey surface, the unit square in z = 0 facing +z, cut into kPatches columns. As a grid face
+/// it is drawn as one light-mapped quad; `asGrid` false gives the face a fifth corner, mid-way along
+/// its bottom edge (the same square), which no grid has: its patches are drawn as triangles.
 struct Field {
     Scene scene;
     PatchMesh mesh;
     std::vector<Rgb> radiosity;
 
-    explicit Field(const Material& material = {"grey", Rgb(0.5), ExitanceRgb{}}) {
+    explicit Field(const Material& material = {"grey", Rgb(0.5), ExitanceRgb{}}, bool asGrid = true) {
         scene.name = "test field";
         scene.materials.push_back(material);
         Face face{{{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}, {0, 0, 1}, 1.0};
+        if (!asGrid) face.vertices.insert(face.vertices.begin() + 1, glm::dvec3{0.5, 0, 0});
         scene.surfaces.push_back({"square", 0, {face}, "test"});
         for (int i = 0; i <= kPatches; ++i) {
             mesh.vertices.emplace_back(static_cast<double>(i) / kPatches, 0.0, 0.0);
@@ -118,7 +121,7 @@ struct Rig {
     std::unique_ptr<render::PatchRenderer> renderer = std::make_unique<render::PatchRenderer>();
     Field field;
 
-    Rig() {
+    explicit Rig(bool asGrid = true) : field({"grey", Rgb(0.5), ExitanceRgb{}}, asGrid) {
         renderer->setMesh(field.scene, field.mesh, 1);
         renderer->setRadiosity(field.radiosity, 1, -1);
     }
@@ -189,6 +192,77 @@ TEST_CASE("smooth shading interpolates the area-weighted vertex means, and flat 
     const double expectedFlatJump = toneMapped255(radiosityOf(3), scale) - toneMapped255(radiosityOf(2), scale);
     CHECK(flatJump == doctest::Approx(expectedFlatJump).epsilon(0.1).scale(0));
     CHECK(std::abs(smoothJump) < 0.25 * flatJump);
+}
+
+TEST_CASE("patches drawn as triangles (no grid face) show each patch's own radiosity flat and the vertex means smooth") {
+    requireDisplay();
+    Rig rig(false);
+    REQUIRE(rig.renderer->model().grids().grids.empty());  // else this draws the light map, not triangles
+    render::DisplaySettings settings = plain();
+    settings.exposureStops = -2.0f;
+    const double scale = expectedExposureScale(-2.0);
+    settings.shading = render::Shading::Flat;
+    const ImageRgb8 flat = rig.draw(settings);
+    for (int k = 0; k < kPatches; ++k)
+        for (const double y : {0.2, 0.5, 0.8}) {  // both triangles of the patch's fan, and its diagonal
+            const double x = (k + 0.5) / kPatches;
+            const glm::dvec3 pixel = pixelAt(flat, x, y);
+            const double expected = toneMapped255(radiosityOf(k), scale);
+            INFO("patch ", k, " at y = ", y, ": expected ", expected, ", got (", pixel.x, ", ", pixel.y, ", ", pixel.z, ")");
+            CHECK(std::abs(pixel.x - expected) <= 2.0);
+            CHECK(std::abs(pixel.y - expected) <= 2.0);
+            CHECK(std::abs(pixel.z - expected) <= 2.0);
+        }
+    settings.shading = render::Shading::Smooth;
+    const ImageRgb8 smooth = rig.draw(settings);
+    for (const double x : {0.1, 0.3, 0.45, 0.5, 0.7, 0.77, 0.9})
+        for (const double y : {0.2, 0.8}) {
+            const double expected = smoothPixelAt(x, scale);
+            const double got = pixelAt(smooth, x, y).y;
+            INFO("x = ", x, ", y = ", y, ": expected ", expected, ", got ", got);
+            CHECK(std::abs(got - expected) <= 3.0);
+        }
+}
+
+TEST_CASE("patches drawn as triangles keep their colours under the wireframe and the shooter's tint, as a grid face does") {
+    requireDisplay();
+    Rig triangles(false);
+    // The grid face in the same context (GL objects belong to the context they were made in);
+    // destroyed before the rig's window.
+    Field gridField;
+    render::PatchRenderer grid;
+    grid.setMesh(gridField.scene, gridField.mesh, 1);
+    REQUIRE(triangles.renderer->model().grids().grids.empty());
+    REQUIRE(grid.model().grids().grids.size() == 1);
+    render::DisplaySettings settings = plain();
+    settings.shading = render::Shading::Flat;
+    const ImageRgb8 bare = triangles.draw(settings);
+    // The wireframe draws every patch with its edges (the unindexed triangles): inside the patches
+    // (off the hidden diagonals) the colours are the indexed draw's.
+    settings.wireframe = true;
+    const ImageRgb8 wired = triangles.draw(settings);
+    for (int k = 0; k < kPatches; ++k) CHECK(pixelAt(wired, (k + 0.3) / kPatches, 0.5) == pixelAt(bare, (k + 0.3) / kPatches, 0.5));
+    // A new solution with a shooter: its tint and outline are redrawn over it from the unindexed
+    // triangles, whose colours must be the new solution's.
+    settings.wireframe = false;
+    settings.highlightShooter = true;
+    std::vector<Rgb> radiosity = triangles.field.radiosity;
+    for (Rgb& b : radiosity) b = b * 0.5 + Rgb(3.0);
+    triangles.renderer->setRadiosity(radiosity, 2, 2);
+    grid.setRadiosity(radiosity, 2, 2);
+    const ImageRgb8 fromTriangles = triangles.draw(settings);
+    grid.setSettings(settings);
+    grid.prepare();
+    const ImageRgb8 fromGrid = render::renderOffscreen(grid, frontCamera(), kWidth, kHeight, {0, 0, 0});
+    for (int k = 0; k < kPatches; ++k) {
+        const glm::dvec3 a = pixelAt(fromTriangles, (k + 0.3) / kPatches, 0.5), b = pixelAt(fromGrid, (k + 0.3) / kPatches, 0.5);
+        INFO("patch ", k, ": triangles (", a.x, ", ", a.y, ", ", a.z, "), grid (", b.x, ", ", b.y, ", ", b.z, ")");
+        CHECK(glm::length(a - b) <= 2.0);
+    }
+    const glm::dvec3 shooter = pixelAt(fromTriangles, 0.5, 0.5);
+    CHECK(shooter.x > shooter.z + 20);  // tinted orange
+    const glm::dvec3 outlined = pixelAt(fromTriangles, 0.4 + 1.0 / kWidth, 0.5);
+    CHECK(outlined.x > outlined.z + 100);
 }
 
 TEST_CASE("false colour maps zero to viridis' first colour and the range maximum to its last") {

@@ -377,6 +377,25 @@ TEST_CASE("geometry: every drawn triangle and grid quad is wound counter-clockwi
         const glm::vec3 e2 = triangles.vertices[v + 2].position - triangles.vertices[v].position;
         CHECK(glm::dot(glm::cross(e1, e2), triangles.vertices[v].normal) > 0.0f);
     }
+    // The indexed draw's triangles are these, corner for corner, each patch's corners stored once.
+    REQUIRE(triangles.cornerIndices.size() == triangles.vertices.size());
+    std::size_t drawnPatches = 0, drawnCorners = 0;
+    for (std::size_t p = 0; p < mesh.size(); ++p)
+        if (!grids.patchInGrid[p]) {
+            ++drawnPatches;
+            drawnCorners += mesh.patches[p].cornerCount;
+        }
+    CHECK(triangles.corners.size() == drawnCorners);
+    CHECK(triangles.corners.size() < triangles.vertices.size());  // quads' corners are shared by their two triangles
+    for (std::size_t v = 0; v < triangles.vertices.size(); ++v) {
+        const std::uint32_t c = triangles.cornerIndices[v];
+        REQUIRE(c < triangles.corners.size());
+        CHECK(triangles.corners[c].position == triangles.vertices[v].position);
+        CHECK(triangles.corners[c].normal == triangles.vertices[v].normal);
+        CHECK(triangles.cornerPatch[c] == triangles.drawnPatch[v]);
+        CHECK(triangles.cornerSmoothing[c] == triangles.drawnSmoothing[v]);
+    }
+    CHECK(drawnPatches > 0);
     const std::vector<render::GridVertex> quads = render::gridQuads(grids);
     REQUIRE(quads.size() == 6 * grids.grids.size());
     for (std::size_t v = 0; v < quads.size(); v += 3) {
