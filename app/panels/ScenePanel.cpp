@@ -3,9 +3,11 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <string>
 
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
+#include "radiometry/common/Thousands.h"
 #include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
@@ -45,10 +47,11 @@ void ScenePanel::draw() {
         const Scene& scene = *snapshot.scene;
         row("Scene", "%s", scene.name.c_str());
         row("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
+        const std::string patches = withThousands(snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
         if (snapshot.groups)
-            row("Patches", "%zu  (%zu groups)", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0}, snapshot.groups->size());
+            row("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
         else
-            row("Patches", "%zu", snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
+            row("Patches", "%s", patches.c_str());
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");

@@ -2,21 +2,10 @@
 
 #include <cstddef>
 
+#include "radiometry/common/Thousands.h"
 #include "radiometry/solver/SolveDefaults.h"
 
 namespace radiant {
-
-namespace {
-
-/// 12345 -> "12,345": patch counts as people read them.
-std::string withThousands(std::size_t n) {
-    std::string digits = std::to_string(n);
-    for (auto i = static_cast<std::ptrdiff_t>(digits.size()) - 3; i > 0; i -= 3)
-        digits.insert(static_cast<std::size_t>(i), ",");
-    return digits;
-}
-
-} // namespace
 
 // The reasons below describe progressive refinement; a different small-mesh default needs its own.
 static_assert(kSolveDefaults.method == SolverMethod::Progressive);
