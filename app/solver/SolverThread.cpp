@@ -9,6 +9,7 @@
 #include <type_traits>
 
 #include "app/solver/ThreadPriority.h"
+#include "radiometry/common/CancellationScope.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchGroups.h"
@@ -167,12 +168,15 @@ SolverThread::~SolverThread() {
 }
 
 bool SolverThread::cancelsLongWork(const SolverCommand& command, SolverActivity activity) {
-    // A new method makes form factors pointless but not the mesh; a new mesh or scene makes both.
+    // A new method makes form factors and the current step pointless but not the mesh; a new mesh or
+    // scene makes all three. A step is stopped between chunks of its parallel loops
+    // (CancellationScope), and the solver is dropped: these commands replace it anyway.
+    const bool solverWork = activity == SolverActivity::FormFactors || activity == SolverActivity::Solving;
     if (std::holds_alternative<command::SetMethod>(command) || std::holds_alternative<command::SetLinkTolerance>(command) ||
         std::holds_alternative<command::SetGrouping>(command))
-        return activity == SolverActivity::FormFactors;
+        return solverWork;
     if (std::holds_alternative<command::Remesh>(command) || std::holds_alternative<command::LoadScene>(command))
-        return activity == SolverActivity::Meshing || activity == SolverActivity::FormFactors;
+        return solverWork || activity == SolverActivity::Meshing;
     return false;
 }
 
@@ -227,6 +231,10 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
                 queue_.pop_front();
                 lastCommand_.store(next->index(), std::memory_order_relaxed);
                 commandsTaken_.fetch_add(1, std::memory_order_relaxed);
+            } else {
+                // About to step with nothing queued: a request left by a command already applied
+                // must not stop this step. send() sets it after queueing, so a newer one still does.
+                progress_.cancelRequested.store(false);
             }
             workerBusy_ = true;
         }
@@ -246,7 +254,10 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
                 continue;
             }
             activity_.store(SolverActivity::Solving);
-            const IterationStats stats = state.solver->step();
+            const IterationStats stats = [&] {
+                const CancellationScope cancellable(progress_);
+                return state.solver->step();
+            }();
             state.history.append(stats);
             if (state.pendingSteps > 0) --state.pendingSteps;
             if (state.running && stats.residual < state.tolerance) state.running = false;
@@ -395,13 +406,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 std::shared_ptr<const PatchMesh> mesh;
                 try {
                     mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
-                } catch (const FormFactorBudgetError& e) {
-            // The lab's own control for coarser meshing, not the command line's flag.
-            state.error = e.where().str() + ": " + e.message(kLabCoarserMeshing);
-            state.running = false;
-            state.pendingSteps = 0;
-            publish(state);
-        } catch (const Cancelled&) {
+                } catch (const Cancelled&) {
                     // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
                     // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.
                     state.scene = std::move(scene);

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "radiometry/common/CancellationScope.h"
 #include "radiometry/solver/WorkerPool.h"
 
 namespace radiant {
@@ -20,12 +21,17 @@ namespace radiant {
 inline unsigned hierarchicalThreadCount() { return std::max(1u, std::thread::hardware_concurrency()); }
 
 /// Calls body(begin, end, thread) over [0, count) in chunks; thread < threads. The first exception
-/// thrown by a body is rethrown on the calling thread once every worker has stopped.
+/// thrown by a body is rethrown on the calling thread once every worker has stopped. Inside a
+/// CancellationScope of the calling thread, throws Cancelled between chunks once it is requested.
 template <class Body>
 void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body&& body) {
     if (count == 0) return;
+    const Progress* const cancellation = CancellationScope::current();
     if (threads <= 1 || count <= chunk) {
-        body(std::size_t{0}, count, 0u);
+        for (std::size_t begin = 0; begin < count; begin += chunk) {
+            if (cancellation) cancellation->checkCancelled();
+            body(begin, std::min(count, begin + chunk), 0u);
+        }
         return;
     }
     std::atomic<std::size_t> next{0};
@@ -36,6 +42,7 @@ void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body
             for (;;) {
                 const std::size_t begin = next.fetch_add(chunk, std::memory_order_relaxed);
                 if (begin >= count) return;
+                if (cancellation) cancellation->checkCancelled();
                 body(begin, std::min(count, begin + chunk), thread);
             }
         } catch (...) {

@@ -12,6 +12,7 @@
 #include <thread>
 #include <vector>
 
+#include "radiometry/common/CancellationScope.h"
 #include "radiometry/solver/WorkerPool.h"
 
 namespace radiant {
@@ -19,14 +20,19 @@ namespace radiant {
 /// Worker threads for parallel loops: the hardware's, at least one.
 inline unsigned workerCount() { return std::max(1u, std::thread::hardware_concurrency()); }
 
-/// Calls body(begin, end) on disjoint chunks of at most `grain` indices covering [0, count).
+/// Calls body(begin, end) on disjoint chunks of at most `grain` indices covering [0, count). Inside a
+/// CancellationScope of the calling thread, throws Cancelled between chunks once it is requested.
 template <class Body>
 void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
     grain = std::max<std::size_t>(grain, 1);
+    const Progress* const cancellation = CancellationScope::current();
     const std::size_t chunks = (count + grain - 1) / grain;
     const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(workerCount(), chunks));
     if (threads <= 1 || WorkerPool::calledFromJob()) {
-        for (std::size_t begin = 0; begin < count; begin += grain) body(begin, std::min(count, begin + grain));
+        for (std::size_t begin = 0; begin < count; begin += grain) {
+            if (cancellation) cancellation->checkCancelled();
+            body(begin, std::min(count, begin + grain));
+        }
         return;
     }
     std::atomic<std::size_t> next{0};
@@ -37,6 +43,7 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
         try {
             for (std::size_t chunk = next.fetch_add(1); chunk < chunks && !failed.load(std::memory_order_relaxed);
                  chunk = next.fetch_add(1)) {
+                if (cancellation) cancellation->checkCancelled();
                 const std::size_t begin = chunk * grain;
                 body(begin, std::min(count, begin + grain));
             }

@@ -24,6 +24,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/ParallelFor.h"
 
 using namespace radiant;
 using namespace radiant::app;
@@ -419,6 +420,55 @@ TEST_CASE("a new method cancels a form-factor computation in progress") {
     const auto snapshot = thread.snapshot();
     CHECK(snapshot->method == SolverMethod::GaussSeidel);
     CHECK(snapshot->stats.iteration == 1);
+}
+
+TEST_CASE("a new method stops a long step at once: the step's parallel loop is cancelled between chunks") {
+    // Stands in for a hierarchical sweep over 60k patches (over 35 s before steps were cancellable):
+    // a Jacobi step whose parallel loop would run kChunks chunks of 1 ms.
+    constexpr std::size_t kChunks = 100000;
+    std::atomic<std::size_t> chunksRun{0};
+    class LongStepSolver final : public Solver {
+    public:
+        LongStepSolver(std::size_t patches, std::atomic<std::size_t>& chunks) : b_(patches, Rgb(1.0)), chunks_(chunks) {}
+        [[nodiscard]] SolverMethod method() const override { return SolverMethod::Jacobi; }
+        IterationStats step() override {
+            parallelFor(kChunks, 1, [&](std::size_t, std::size_t) {
+                chunks_.fetch_add(1);
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            });
+            stats_.iteration += 1;
+            return stats_;
+        }
+        [[nodiscard]] const std::vector<Rgb>& solution() const override { return b_; }
+        void setMaterial(std::size_t, const Rgb&, const ExitanceRgb&) override {}
+        void reset() override { stats_ = {}; }
+        [[nodiscard]] const IterationStats& lastStats() const override { return stats_; }
+
+    private:
+        std::vector<Rgb> b_;
+        std::atomic<std::size_t>& chunks_;
+        IterationStats stats_;
+    };
+    SolverFactory factory = [&](SolverMethod method, const Scene&, const PatchMesh& mesh, const SolverOptions&,
+                                Progress*) -> std::unique_ptr<Solver> {
+        if (method == SolverMethod::Jacobi) return std::make_unique<LongStepSolver>(mesh.size(), chunksRun);
+        return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), 0.5, 1.0);
+    };
+    SolverThread thread({}, factory);
+    thread.send(command::SetMethod{SolverMethod::Jacobi});
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::Run{});
+    // Progress, not wall time: wait until the long step has begun its chunks.
+    while (chunksRun.load() == 0) std::this_thread::yield();
+    thread.send(command::SetMethod{SolverMethod::GaussSeidel});
+    thread.send(command::Pause{});
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    CHECK(chunksRun.load() < kChunks / 10);
+    const auto snapshot = thread.snapshot();
+    CHECK(snapshot->method == SolverMethod::GaussSeidel);
+    CHECK(snapshot->stats.iteration == 1);
+    CHECK(snapshot->error.empty());
 }
 
 TEST_CASE("the history a snapshot carries is every step in order while the worker steps, and shares its full chunks") {
