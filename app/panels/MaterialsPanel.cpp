@@ -186,13 +186,11 @@ void MaterialsPanel::apply(bool continuesEdit) {
 
 void MaterialsPanel::resetMaterials(LiveSolve& live) {
     const Snapshot& shown = live.snapshot();
-    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
     if (shown.scene) {
         live.materialEdits.follow(*shown.scene, shown.rays.get());
         live.materialEdits.recordReset(*shown.scene);
     }
-    live.send(command::ResetMaterials{});
-    if (shown.running || converged) live.send(command::Run{});
+    live.sendAndResume(command::ResetMaterials{});
 }
 
 namespace {
@@ -206,9 +204,9 @@ std::string sendHistoryStep(LiveSolve& live, bool undoing) {
     const std::vector<SolverCommand> commands = undoing ? history.undo() : history.redo();
     if (commands.empty()) return {};
     // As an edit: a running or converged solve resumes from its solution, a paused one stays paused.
-    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
+    const bool resume = live.resumesAfterChange();
     for (const SolverCommand& command : commands) live.send(command);
-    if (shown.running || converged) live.send(command::Run{});
+    if (resume) live.send(command::Run{});
     return (undoing ? "undid " : "redid ") + what + (undoing ? " (Ctrl+Y redoes it)" : "");
 }
 
@@ -237,16 +235,12 @@ std::string MaterialsPanel::submit(LiveSolve& live, std::size_t surface, const R
     }
     // Judged before sending: the snapshot is the one this frame shows.
     const Snapshot& shown = live.snapshot();
-    // Not the history: a material edit starts a new, empty segment of it before the next step.
-    const bool converged = !shown.running && shown.stats.iteration > 0 && shown.stats.residual < shown.tolerance;
     if (shown.scene) {
         live.materialEdits.follow(*shown.scene, shown.rays.get());
         live.materialEdits.recordEdit(*shown.scene, surface, {reflectance, exitanceW_m2}, continuesEdit);
     }
-    live.send(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2), continuesEdit});
-    // A running or converged solve re-solves live, from its current solution (no new form
-    // factors). A paused or stepped one stays as the teacher left it: the next step shows the edit.
-    if (shown.running || converged) live.send(command::Run{});
+    // A running or converged solve re-solves live, from its current solution (no new form factors).
+    live.sendAndResume(command::SetMaterial{surface, reflectance, ExitanceRgb(exitanceW_m2), continuesEdit});
     return {};
 }
 

@@ -117,9 +117,9 @@ void ScenePanel::drawMeshing() {
     }
     if (ImGui::IsItemDeactivatedAfterEdit() && std::abs(requested - maxPatchArea_) > 1e-12) {
         maxPatchArea_ = requested;
-        live_.send(command::Remesh{MeshingOptions{requested}});
+        live_.sendAndResume(command::Remesh{MeshingOptions{requested}});
     }
-    if (ImGui::Checkbox("Group patches", &groupPatches_)) live_.send(command::SetGrouping{groupPatches_});
+    if (ImGui::Checkbox("Group patches", &groupPatches_)) live_.sendAndResume(command::SetGrouping{groupPatches_});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box)\n"
                           "share one radiosity, in groups of about the largest patch area:\n"

@@ -27,6 +27,12 @@ void LiveSolve::send(SolverCommand command) {
     thread.send(std::move(command));
 }
 
+void LiveSolve::sendAndResume(SolverCommand command) {
+    const bool resume = resumesAfterChange();
+    send(std::move(command));
+    if (resume) send(command::Run{});
+}
+
 bool LiveSolve::refresh() {
     std::shared_ptr<const Snapshot> newest = thread.snapshot();
     const bool changed = newest->generation != current->generation;

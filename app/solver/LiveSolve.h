@@ -23,6 +23,15 @@ struct LiveSolve {
     LiveSolve& operator=(const LiveSolve&) = delete;
 
     void send(SolverCommand command);
+    /// This frame's solve is running or has converged: a change of what is solved (a material, the
+    /// mesh, the grouping) then runs on to the new answer without a click, while a paused or stepped
+    /// solve stays as the teacher left it (the next step shows the change).
+    [[nodiscard]] bool resumesAfterChange() const {
+        return current->running ||
+               (current->stats.iteration > 0 && current->stats.residual < current->tolerance);
+    }
+    /// send(command), then Run when resumesAfterChange() held before it.
+    void sendAndResume(SolverCommand command);
     /// Takes the newest snapshots; true when the first's differs from the one held before.
     bool refresh();
     [[nodiscard]] const Snapshot& snapshot() const { return *current; }

@@ -206,6 +206,43 @@ TEST_CASE("a material edit keeps a paused solve paused until the next step, and 
     CHECK_FALSE(live.snapshot().running);
 }
 
+TEST_CASE("a new mesh or grouping from the Scene panel solves on when the solve ran or had converged, and waits when it was stepped") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    LiveSolve live(thread);
+    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetTolerance{1e-3});
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    live.refresh();
+    REQUIRE(live.snapshot().stats.residual < 1e-3);
+    REQUIRE(live.resumesAfterChange());
+    live.sendAndResume(command::Remesh{MeshingOptions{0.0625, 1000}});
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(live.snapshot().mesh->size() == 16);
+    // Converged again on the new mesh without a click: B = E / (1 - rho) = 2 within the tolerance.
+    CHECK(live.snapshot().stats.residual < 1e-3);
+    CHECK(live.snapshot().radiosity.front().x == doctest::Approx(2.0).epsilon(2e-3).scale(0));
+
+    live.sendAndResume(command::SetGrouping{true});
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(live.snapshot().stats.iteration > 0);
+    CHECK(live.snapshot().stats.residual < 1e-3);
+
+    thread.send(command::Reset{});
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    live.refresh();
+    REQUIRE_FALSE(live.resumesAfterChange());  // stepped once, not converged: the teacher is stepping
+    live.sendAndResume(command::Remesh{MeshingOptions{0.25, 1000}});
+    thread.waitUntilIdle();
+    live.refresh();
+    CHECK(live.snapshot().mesh->size() == 4);
+    CHECK(live.snapshot().stats.iteration == 0);
+    CHECK_FALSE(live.snapshot().running);
+}
+
 TEST_CASE("the lab's patch groups: each mesh grouped at its area, the default chosen by the groups, solved as the command line does") {
     auto scene = std::make_shared<const Scene>(
         loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf").scene);
