@@ -232,6 +232,67 @@ inline double gaussFormFactor(const glm::dvec3& x, const glm::dvec3& n, const Pa
     return source.area * sum / std::numbers::pi;
 }
 
+/// A source's quadrature nodes for gaussFormFactor (3 x 3) and farFieldFormFactor (2 x 2 on a quad,
+/// 3 points on a triangle), with their weights normalised to sum 1: the gather rows evaluate the
+/// same source's rules at thousands of points, and computing the bilinear map and its Jacobians at
+/// every call was most of each call's cost.
+struct SourceRule {
+    std::array<glm::dvec3, 9> gauss{};
+    std::array<double, 9> gaussWeight{};
+    std::array<glm::dvec3, 4> far{};
+    std::array<double, 4> farWeight{};
+    int gaussCount = 0, farCount = 0;
+};
+
+inline SourceRule makeSourceRule(const PatchPolygon& source) {
+    SourceRule rule;
+    forGaussPoints(source, 3, [&](const glm::dvec3& y, double w) {
+        rule.gauss[static_cast<std::size_t>(rule.gaussCount)] = y;
+        rule.gaussWeight[static_cast<std::size_t>(rule.gaussCount++)] = w;
+    });
+    const auto& v = source.vertices;
+    if (source.count == 4) {
+        static constexpr std::array<double, 2> node{0.21132486540518713, 0.78867513459481287};
+        double weights = 0;
+        for (const double u : node)
+            for (const double w : node) {
+                const glm::dvec3 du = (1 - w) * (v[1] - v[0]) + w * (v[2] - v[3]);
+                const glm::dvec3 dw = (1 - u) * (v[3] - v[0]) + u * (v[2] - v[1]);
+                const double jacobian = glm::length(glm::cross(du, dw));
+                rule.far[static_cast<std::size_t>(rule.farCount)] = (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
+                rule.farWeight[static_cast<std::size_t>(rule.farCount++)] = jacobian;
+                weights += jacobian;
+            }
+        for (double& w : rule.farWeight) w = weights > 0 ? w / weights : 0;
+    } else if (source.count == 3) {
+        for (std::size_t a = 0; a < 3; ++a) {
+            rule.far[a] = (4.0 * v[a] + v[(a + 1) % 3] + v[(a + 2) % 3]) / 6.0;
+            rule.farWeight[a] = 1.0 / 3;
+        }
+        rule.farCount = 3;
+    }
+    return rule;
+}
+
+/// gaussFormFactor (`far` false) or farFieldFormFactor (`far` true) by the source's precomputed nodes:
+/// the same rules, negative when a corner of the source is below x's tangent plane.
+inline double ruleFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source, const SourceRule& rule,
+                             bool far) {
+    for (int i = 0; i < source.count; ++i)
+        if (glm::dot(n, source.vertices[static_cast<std::size_t>(i)] - x) <= 0) return -1;
+    if (glm::dot(source.normal, x - source.centroid) <= 0) return 0;  // behind the emitting side
+    const glm::dvec3* nodes = far ? rule.far.data() : rule.gauss.data();
+    const double* weights = far ? rule.farWeight.data() : rule.gaussWeight.data();
+    const int count = far ? rule.farCount : rule.gaussCount;
+    double sum = 0;
+    for (int j = 0; j < count; ++j) {
+        const glm::dvec3 d = nodes[j] - x;
+        const double r2 = glm::dot(d, d);
+        sum += weights[j] * std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
+    }
+    return source.area * sum / std::numbers::pi;
+}
+
 /// The unoccluded kernel of a link receiver <- source: `mean`, F(receiver -> source); `spread`, how
 /// much the point kernel varies over the receiver (the error of pushing one value down to all of it);
 /// `atChildren`, the kernel's mean over each of the receiver's four children-to-be (childCentroids'

@@ -32,16 +32,15 @@ void HierarchicalSolver::indexLinksByReceiver() {
 
 namespace {
 
-/// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x and `exact` is
-/// not asked for, the 2 x 2 Gauss rule over it (within 0.2% there, a quarter of the cost: the patch
-/// rows of a 2,000-patch mesh took 0.25 s of CPU with the contour integral alone).
-double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, bool exact) {
-    if (exact) return hierarchical::pointToElementFormFactor(x, n, q);
+/// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x, a Gauss rule of
+/// the point kernel over it by q's precomputed nodes: 2 x 2 beyond kFarFieldDistanceSquaredOverArea
+/// (within 0.2% there, a quarter of the cost: the patch rows of a 2,000-patch mesh took 0.25 s of CPU
+/// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea.
+double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, const hierarchical::SourceRule& rule) {
     const double nearest = std::max(0.0, glm::length(q.centroid - x) - std::sqrt(q.area));
     const double ratio = nearest * nearest / q.area;
-    if (ratio > hierarchical::kFarFieldDistanceSquaredOverArea) return hierarchical::pointToElementFormFactor(x, n, q, true);
     if (ratio > hierarchical::kGaussDistanceSquaredOverArea) {
-        const double f = hierarchical::gaussFormFactor(x, n, q);
+        const double f = hierarchical::ruleFormFactor(x, n, q, rule, ratio > hierarchical::kFarFieldDistanceSquaredOverArea);
         if (f >= 0) return f;
     }
     return hierarchical::pointToElementFormFactor(x, n, q);
@@ -114,7 +113,7 @@ void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, c
         for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(link, c, x, kernel, visibility, out);
         return;
     }
-    const double f = kernel(q);
+    const double f = kernel(source, q);
     if (f <= 0) return;
     const double v = visibility(link, source, q);
     if (v > 0) out.push_back({source, static_cast<float>(f * v)});
@@ -135,6 +134,10 @@ bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
 
 void HierarchicalSolver::buildPatchRows() {
     linkShaft_.assign(occluderBegin_.empty() ? 0 : links_.size(), 0);
+    sourceRules_.resize(tree_.size());
+    parallelChunks(tree_.size(), threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = from; e < to; ++e) sourceRules_[e] = hierarchical::makeSourceRule(tree_.polygon(static_cast<ElementIndex>(e)));
+    });
     std::vector<std::vector<GatherTerm>> rows(patches_.size());
     const auto& radiosity = tree_.radiosity();
     parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
@@ -226,9 +229,10 @@ void HierarchicalSolver::buildPatchRows() {
                     for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
                     return inFront && above;
                 };
-                const auto kernel = [&](const PatchPolygon& q) {
+                const auto kernel = [&](ElementIndex source, const PatchPolygon& q) {
+                    const hierarchical::SourceRule& rule = sourceRules_[source];
                     double f = 0;
-                    for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, false);
+                    for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, rule);
                     return f;
                 };
                 gatherTerms(commonLeaf, P.centroid, faces, kernel, visibility, false, row);
@@ -239,7 +243,7 @@ void HierarchicalSolver::buildPatchRows() {
                 const glm::dvec3& n = tree_.polygon(leaf).normal;
                 gatherTerms(
                     leaf, x, [&](const PatchPolygon& q) { return mayFace(x, n, q); },
-                    [&](const PatchPolygon& q) { return weight * kernelAt(x, n, q, false); }, visibility, false, row);
+                    [&](ElementIndex source, const PatchPolygon& q) { return weight * kernelAt(x, n, q, sourceRules_[source]); }, visibility, false, row);
             };
             if (!wholePatch && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
             std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
@@ -259,6 +263,7 @@ void HierarchicalSolver::buildPatchRows() {
     patchRows_.reserve(patchRowBegin_.back());
     for (const auto& row : rows) patchRows_.insert(patchRows_.end(), row.begin(), row.end());
     patchRowsCurrent_ = true;
+    sourceRules_ = {};
 }
 
 Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
@@ -288,7 +293,7 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
     };
     gatherTerms(
         leaf, x, [&](const PatchPolygon& q) { return mayFace(x, element.normal, q); },
-        [&](const PatchPolygon& q) { return hierarchical::pointToElementFormFactor(x, element.normal, q); }, rays,
+        [&](ElementIndex, const PatchPolygon& q) { return hierarchical::pointToElementFormFactor(x, element.normal, q); }, rays,
         caster_ != nullptr, terms);
     Rgb irradiance(0.0);
     for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
