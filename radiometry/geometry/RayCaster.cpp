@@ -15,6 +15,7 @@
 #include "radiometry/geometry/RayCaster.h"
 
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <cmath>
 #include <limits>
@@ -80,19 +81,28 @@ struct QueryContext {
     bool hasEnd;
     glm::dvec3 direction;  ///< of an intersect query; zero for occlusion, where either twin blocks
     bool frontOnly;        ///< pass through every face met from behind (picking what the view shows)
+    /// A packet of segments (occludedPacket): each ray's end points by its id; null for one ray.
+    const glm::dvec3* starts = nullptr;
+    const glm::dvec3* ends = nullptr;
 };
 
 void rejectHitsOnEndPointPlanes(const RTCFilterFunctionNArguments* args) {
-    if (args->N != 1 || args->valid[0] == 0) return;
     const auto* query = reinterpret_cast<const QueryContext*>(args->context);
-    const TriangleInfo& triangle = query->impl->triangles[RTCHitN_primID(args->hit, args->N, 0)];
     const double tolerance = query->impl->planeTolerance;
-    const auto onPlane = [&](const glm::dvec3& p) {
-        return std::abs(glm::dot(triangle.normal, p) - triangle.planeOffset) <= tolerance;
-    };
-    if (onPlane(query->start) || (query->hasEnd && onPlane(query->end)) ||
-        ((triangle.twoSided || query->frontOnly) && glm::dot(triangle.normal, query->direction) > 0))
-        args->valid[0] = 0;
+    for (unsigned lane = 0; lane < args->N; ++lane) {
+        if (args->valid[lane] == 0) continue;
+        const TriangleInfo& triangle = query->impl->triangles[RTCHitN_primID(args->hit, args->N, lane)];
+        const auto onPlane = [&](const glm::dvec3& p) {
+            return std::abs(glm::dot(triangle.normal, p) - triangle.planeOffset) <= tolerance;
+        };
+        // A packet's lanes may reach the filter in any order: each ray's id names its segment.
+        const unsigned id = query->starts ? RTCRayN_id(args->ray, args->N, lane) : 0;
+        const glm::dvec3& start = query->starts ? query->starts[id] : query->start;
+        const glm::dvec3& end = query->starts ? query->ends[id] : query->end;
+        if (onPlane(start) || (query->hasEnd && onPlane(end)) ||
+            ((triangle.twoSided || query->frontOnly) && glm::dot(triangle.normal, query->direction) > 0))
+            args->valid[lane] = 0;
+    }
 }
 
 void throwOnDeviceError(RTCDevice device, const std::string& what) {
@@ -266,6 +276,40 @@ bool RayCaster::occluded(const glm::dvec3& a, const glm::dvec3& b) const {
     rtcOccluded1(impl_->scene, &context.embree, &ray);
     // Embree marks an occluded ray by setting tfar to -infinity.
     return ray.tfar < 0;
+}
+
+void RayCaster::occluded(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<bool> blocked) const {
+    // Packets of 8 through Embree's 8-wide traversal: the segments of one visibility set run between
+    // the same two elements, so they share most of the BVH's nodes, and one call replaces eight.
+    constexpr std::size_t kWidth = 8;
+    for (std::size_t first = 0; first < a.size(); first += kWidth) {
+        const std::size_t count = std::min(kWidth, a.size() - first);
+        QueryContext context = makeContext(*impl_, a[first], b[first], true);
+        context.starts = a.data() + first;
+        context.ends = b.data() + first;
+        alignas(32) RTCRay8 rays{};
+        alignas(32) std::array<int, kWidth> valid{};
+        for (std::size_t i = 0; i < count; ++i) {
+            const glm::dvec3 segment = b[first + i] - a[first + i];
+            const double length = glm::length(segment);
+            if (!(length > 0)) continue;  // an empty segment meets nothing
+            const double epsilon = std::min(impl_->planeTolerance, kRelativeSegmentEpsilon * length);
+            const glm::dvec3 origin = a[first + i] - impl_->origin, direction = segment / length;
+            rays.org_x[i] = static_cast<float>(origin.x);
+            rays.org_y[i] = static_cast<float>(origin.y);
+            rays.org_z[i] = static_cast<float>(origin.z);
+            rays.dir_x[i] = static_cast<float>(direction.x);
+            rays.dir_y[i] = static_cast<float>(direction.y);
+            rays.dir_z[i] = static_cast<float>(direction.z);
+            rays.tnear[i] = static_cast<float>(epsilon);
+            rays.tfar[i] = static_cast<float>(std::min(length - epsilon, static_cast<double>(std::numeric_limits<float>::max())));
+            rays.mask[i] = 0xFFFFFFFFu;
+            rays.id[i] = static_cast<unsigned>(i);
+            valid[i] = -1;
+        }
+        rtcOccluded8(valid.data(), impl_->scene, &context.embree, &rays);
+        for (std::size_t i = 0; i < count; ++i) blocked[first + i] = valid[i] != 0 && rays.tfar[i] < 0;
+    }
 }
 
 } // namespace radiant

@@ -503,22 +503,37 @@ inline double elementVisibilityOnce(double& unblocked, const PatchPolygon& a, co
     };
     double seen = 0, total = 0;
     int through = 0;
-    for (int k = 0; k < rays; ++k) {
-        const std::uint64_t h1 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 0);
-        const std::uint64_t h2 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 1);
-        const std::uint64_t h3 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 2);
-        const std::uint64_t h4 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 3);
-        const glm::dvec3 pa = pointOn(a, stratum(k, h1, shift[0]), stratum((3 * k + 1) % rays, h2, shift[1]));
-        const glm::dvec3 pb = pointOn(b, stratum((k + 1) % rays, h3, shift[2]), stratum((3 * k + 2) % rays, h4, shift[3]));
-        // Each ray weighted by the point-to-point kernel: the share of the form factor, not of the
-        // area pairs (they differ where a blocker sits close to one element, at a block's foot).
-        const glm::dvec3 d = pb - pa;
-        const double r2 = glm::dot(d, d);
-        const double weight = r2 > 0 ? std::max(0.0, glm::dot(a.normal, d)) * std::max(0.0, -glm::dot(b.normal, d)) / (r2 * r2) : 0;
-        total += weight;
-        if (!caster.occluded(pa, pb)) {
-            seen += weight;
-            ++through;
+    // The set's rays go to the caster together, in packets (RayCaster::occluded over spans).
+    constexpr int kBatch = 16;
+    std::array<glm::dvec3, kBatch> from, to;
+    std::array<double, kBatch> weights{};
+    std::array<bool, kBatch> blocked{};
+    for (int first = 0; first < rays; first += kBatch) {
+        const int count = std::min(kBatch, rays - first);
+        for (int i = 0; i < count; ++i) {
+            const int k = first + i;
+            const auto j = static_cast<std::size_t>(i);
+            const std::uint64_t h1 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 0);
+            const std::uint64_t h2 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 1);
+            const std::uint64_t h3 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 2);
+            const std::uint64_t h4 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 3);
+            from[j] = pointOn(a, stratum(k, h1, shift[0]), stratum((3 * k + 1) % rays, h2, shift[1]));
+            to[j] = pointOn(b, stratum((k + 1) % rays, h3, shift[2]), stratum((3 * k + 2) % rays, h4, shift[3]));
+            // Each ray weighted by the point-to-point kernel: the share of the form factor, not of the
+            // area pairs (they differ where a blocker sits close to one element, at a block's foot).
+            const glm::dvec3 d = to[j] - from[j];
+            const double r2 = glm::dot(d, d);
+            weights[j] = r2 > 0 ? std::max(0.0, glm::dot(a.normal, d)) * std::max(0.0, -glm::dot(b.normal, d)) / (r2 * r2) : 0;
+        }
+        const auto size = static_cast<std::size_t>(count);
+        caster.occluded(std::span<const glm::dvec3>(from.data(), size), std::span<const glm::dvec3>(to.data(), size),
+                        std::span<bool>(blocked.data(), size));
+        for (std::size_t j = 0; j < size; ++j) {
+            total += weights[j];
+            if (!blocked[j]) {
+                seen += weights[j];
+                ++through;
+            }
         }
     }
     unblocked = static_cast<double>(through) / rays;

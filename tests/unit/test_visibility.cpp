@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <numbers>
 #include <random>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -260,14 +261,37 @@ TEST_CASE("ray caster: occlusion in the Cornell box agrees with clipping segment
     };
     const int segments = 20000;
     int disagreements = 0, blocked = 0;
+    std::vector<glm::dvec3> from, to;
+    std::vector<char> expectedAll;
     for (int i = 0; i < segments; ++i) {
         const glm::dvec3 p = pointOn(floor), q = pointOn(ceiling);
         const bool expected = crossesBlock(shortBlock, p, q) || crossesBlock(tallBlock, p, q);
         blocked += expected ? 1 : 0;
         disagreements += rays.occluded(p, q) != expected ? 1 : 0;
+        from.push_back(p);
+        to.push_back(q);
+        expectedAll.push_back(expected ? 1 : 0);
     }
     CHECK(blocked > segments / 10);     // the test exercises both outcomes
     CHECK(disagreements <= 2);          // float BVH against double planes: grazing hits may differ
+
+    // The same segments as packets (the span overload), in batches of 1 to 19 so that partly filled
+    // packets and several packets per call both occur; an empty segment is never blocked.
+    int packetDisagreements = 0;
+    std::size_t next = 0;
+    for (std::size_t batch = 1; next < from.size(); batch = batch % 19 + 1) {
+        const std::size_t count = std::min(batch, from.size() - next);
+        std::array<bool, 19> answers{};
+        rays.occluded(std::span<const glm::dvec3>(from.data() + next, count), std::span<const glm::dvec3>(to.data() + next, count),
+                      std::span<bool>(answers.data(), count));
+        for (std::size_t i = 0; i < count; ++i) packetDisagreements += answers[i] != (expectedAll[next + i] != 0) ? 1 : 0;
+        next += count;
+    }
+    CHECK(packetDisagreements <= 2);
+    const std::array<glm::dvec3, 2> same{floor.vertices[0] + glm::dvec3(0.1, 0, 0.1), floor.vertices[0] + glm::dvec3(0.1, 0, 0.1)};
+    std::array<bool, 1> empty{true};
+    rays.occluded(std::span<const glm::dvec3>(same.data(), 1), std::span<const glm::dvec3>(same.data() + 1, 1), std::span<bool>(empty));
+    CHECK_FALSE(empty[0]);
 }
 
 TEST_CASE("visibility: concurrent queries on one ray caster agree with sequential ones") {
