@@ -343,26 +343,6 @@ inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
     return {mean, highest - lowest, atChildren};
 }
 
-/// F(receiver -> source) unoccluded, for a receiver small against the link it inherits: the 3 x 3
-/// Gauss rule when close, the far-field kernel at the centroid when the source is far and the
-/// receiver small against the distance too (the kernel is then nearly linear across it), else the
-/// 4-point rule of the receiver's children's centroids.
-inline double meanKernel(const PatchPolygon& p, const PatchPolygon& q) {
-    const glm::dvec3 apart = p.centroid - q.centroid;
-    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
-    const double distance2 = glm::dot(apart, apart);
-    if (distance2 < 2.25 * reach * reach) return gaussMeanKernel(p, q);
-    const double nearestSample = std::max(0.0, std::sqrt(distance2) - std::sqrt(p.area));
-    const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
-    if (far && distance2 > kFarFieldDistanceSquaredOverArea * p.area) {
-        const double f = farFieldFormFactor(p.centroid, p.normal, q);
-        if (f >= 0) return f;
-    }
-    double sum = 0;
-    for (const glm::dvec3& x : childCentroids(p)) sum += pointToElementFormFactor(x, p.normal, q, far);
-    return 0.25 * sum;
-}
-
 /// True when some of each element lies strictly in front of the other: otherwise no light passes.
 inline bool facing(const PatchPolygon& a, const PatchPolygon& b) {
     const auto someInFront = [](const PatchPolygon& of, const PatchPolygon& plane) {

@@ -181,6 +181,8 @@ private:
     void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, Kernel& kernel, Visibility& visibility,
                       std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
+    /// sourceRules_ for every element (kept from the leaf rows to the patch rows of the same step).
+    void buildSourceRules();
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
     /// Each leaf's gather row: every link of the leaf and its ancestors with the form factor from the
@@ -244,7 +246,7 @@ private:
     static constexpr std::size_t kMaxShaftOccluders = 256;
     /// Per link while the patch rows are built (shaftClear): 0 not yet tested, 1 clear, 2 maybe blocked.
     mutable std::vector<std::uint8_t> linkShaft_;
-    /// Per element, its quadrature nodes as a source (only while the patch rows are built).
+    /// Per element, its quadrature nodes as a source (only while the leaf and patch rows are built).
     std::vector<hierarchical::SourceRule> sourceRules_;
     std::vector<std::size_t> patchRowBegin_;
     std::vector<GatherTerm> patchRows_;
