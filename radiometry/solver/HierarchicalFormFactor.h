@@ -242,10 +242,16 @@ struct SourceRule {
     std::array<glm::dvec3, 4> far{};
     std::array<double, 4> farWeight{};
     int gaussCount = 0, farCount = 0;
+    /// Squared distances from the centroid beyond which (distance - sqrt(A))^2 / A exceeds
+    /// kGaussDistanceSquaredOverArea and kFarFieldDistanceSquaredOverArea.
+    double gaussDistance2 = 0, farDistance2 = 0;
 };
 
 inline SourceRule makeSourceRule(const PatchPolygon& source) {
     SourceRule rule;
+    const double edge = std::sqrt(source.area);
+    rule.gaussDistance2 = std::pow(edge + std::sqrt(kGaussDistanceSquaredOverArea * source.area), 2);
+    rule.farDistance2 = std::pow(edge + std::sqrt(kFarFieldDistanceSquaredOverArea * source.area), 2);
     forGaussPoints(source, 3, [&](const glm::dvec3& y, double w) {
         rule.gauss[static_cast<std::size_t>(rule.gaussCount)] = y;
         rule.gaussWeight[static_cast<std::size_t>(rule.gaussCount++)] = w;

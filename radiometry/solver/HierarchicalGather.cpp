@@ -10,7 +10,6 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -37,10 +36,11 @@ namespace {
 /// (within 0.2% there, a quarter of the cost: the patch rows of a 2,000-patch mesh took 0.25 s of CPU
 /// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea.
 double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, const hierarchical::SourceRule& rule) {
-    const double nearest = std::max(0.0, glm::length(q.centroid - x) - std::sqrt(q.area));
-    const double ratio = nearest * nearest / q.area;
-    if (ratio > hierarchical::kGaussDistanceSquaredOverArea) {
-        const double f = hierarchical::ruleFormFactor(x, n, q, rule, ratio > hierarchical::kFarFieldDistanceSquaredOverArea);
+    // (|centroid - x| - sqrt(A))^2 / A against the rules' thresholds, as squared distances.
+    const glm::dvec3 d = q.centroid - x;
+    const double distance2 = glm::dot(d, d);
+    if (distance2 > rule.gaussDistance2) {
+        const double f = hierarchical::ruleFormFactor(x, n, q, rule, distance2 > rule.farDistance2);
         if (f >= 0) return f;
     }
     return hierarchical::pointToElementFormFactor(x, n, q);
@@ -179,7 +179,12 @@ void HierarchicalSolver::buildPatchRows() {
         // sphere room's sphere was 6.5% over Gauss-Seidel with the expanded leaf rows, 2.3% with rays
         // for the partial links alone), so each such term casts rays from the patch, once per patch
         // (rays per patch point would make the display noisy; the probe's point casts its own).
-        std::unordered_map<std::uint64_t, double> termVisibility;
+        // Per element, scratch of this thread's current patch (reset through the row after each):
+        // the term's visibility from the patch (negative: not yet cast) and its place in the row
+        // (-1: not in it), so that merging a row's terms costs no sort.
+        std::vector<double> termVisibility(tree_.size(), -1.0);
+        std::vector<std::int32_t> rowSlot(tree_.size(), -1);
+        std::vector<ElementIndex> cast;
         const PatchPolygon* patchPolygon = nullptr;
         // The deepest element that holds the whole patch, and whether `e` is it or one of its ancestors.
         ElementIndex home = kNoElement;
@@ -212,16 +217,19 @@ void HierarchicalSolver::buildPatchRows() {
                 shaftClear(link))
                 return 1.0;
             // Rays from the patch to the term: the same whichever link of the patch's points asked.
-            const std::uint64_t key = term;
-            const auto [entry, inserted] = termVisibility.try_emplace(key, 0.0);
-            if (inserted)
-                entry->second = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : kDimTermVisibilityRays, hierarchical::mix(patchSeed ^ key));
-            return entry->second;
+            double& known = termVisibility[term];
+            if (known < 0) {
+                known = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : kDimTermVisibilityRays,
+                                                        hierarchical::mix(patchSeed ^ static_cast<std::uint64_t>(term)));
+                cast.push_back(term);
+            }
+            return known;
         };
         for (std::size_t p = from; p < to; ++p) {
             const PatchSample& patch = patches_[p];
             std::vector<GatherTerm>& row = rows[p];
-            termVisibility.clear();
+            for (const ElementIndex term : cast) termVisibility[term] = -1.0;
+            cast.clear();
             patchPolygon = &patch.polygon;
             patchSeed = hierarchical::mix(options_.seed ^ 0x9a7c4ull ^ p);
             // The patch's mean irradiance by a Gauss rule: 3 x 3 where the leaves are finer than the
@@ -277,15 +285,18 @@ void HierarchicalSolver::buildPatchRows() {
                     [&](ElementIndex source, const PatchPolygon& q) { return weight * kernelAt(x, n, q, sourceRules_[source]); }, visibility, false, row);
             };
             if (!wholePatch && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
-            std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
             std::size_t kept = 0;
             for (const GatherTerm& term : row) {
-                if (kept > 0 && row[kept - 1].source == term.source)
-                    row[kept - 1].weight += term.weight;
-                else
+                std::int32_t& slot = rowSlot[term.source];
+                if (slot >= 0) {
+                    row[static_cast<std::size_t>(slot)].weight += term.weight;
+                } else {
+                    slot = static_cast<std::int32_t>(kept);
                     row[kept++] = term;
+                }
             }
             row.resize(kept);
+            for (const GatherTerm& term : row) rowSlot[term.source] = -1;
         }
     });
     patchRowBegin_.assign(patches_.size() + 1, 0);
