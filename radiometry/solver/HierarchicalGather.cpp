@@ -185,6 +185,7 @@ void HierarchicalSolver::buildPatchRows() {
         std::vector<double> termVisibility(tree_.size(), -1.0);
         std::vector<std::int32_t> rowSlot(tree_.size(), -1);
         std::vector<ElementIndex> cast;
+        std::vector<std::pair<ElementIndex, unsigned>> chain;  // the split patch's chains, see below
         const PatchPolygon* patchPolygon = nullptr;
         // The deepest element that holds the whole patch, and whether `e` is it or one of its ancestors.
         ElementIndex home = kNoElement;
@@ -248,33 +249,76 @@ void HierarchicalSolver::buildPatchRows() {
             std::array<double, 4> weights{};
             std::size_t pointCount = 0;
             ElementIndex commonLeaf = kNoElement;
+            std::array<ElementIndex, 4> leaves{};
             if (order == 2 && patch.polygon.count >= 3) {
                 hierarchical::forGaussPoints(patch.polygon, 2, [&](const glm::dvec3& x, double weight) {
                     points[pointCount] = x;
                     weights[pointCount++] = weight;
                 });
                 for (std::size_t i = 0; i < pointCount; ++i) {
-                    const ElementIndex leaf = tree_.locate(patch.surface, patch.face, points[i]);
-                    commonLeaf = i == 0 || leaf == commonLeaf ? leaf : kNoElement;
+                    leaves[i] = tree_.locate(patch.surface, patch.face, points[i]);
+                    commonLeaf = i == 0 || leaves[i] == commonLeaf ? leaves[i] : kNoElement;
                 }
             }
             const bool wholePatch = pointCount == 4 && commonLeaf != kNoElement;
+            const PatchPolygon& P = patch.polygon;
+            // Whether the patch may see some of q's front (the kernel is zero otherwise): some corner of
+            // the patch in front of q's plane and some corner of q above the patch's plane.
+            const auto faces = [&](const glm::dvec3& n, const PatchPolygon& q) {
+                bool inFront = false, above = false;
+                for (const glm::dvec3& v : P.corners()) inFront = inFront || glm::dot(q.normal, v - q.centroid) > 0;
+                for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
+                return inFront && above;
+            };
             if (wholePatch) {
-                const PatchPolygon& P = patch.polygon;
                 const glm::dvec3& n = tree_.polygon(commonLeaf).normal;
-                const auto faces = [&](const PatchPolygon& q) {
-                    bool inFront = false, above = false;
-                    for (const glm::dvec3& v : P.corners()) inFront = inFront || glm::dot(q.normal, v - q.centroid) > 0;
-                    for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
-                    return inFront && above;
-                };
                 const auto kernel = [&](ElementIndex source, const PatchPolygon& q) {
                     const hierarchical::SourceRule& rule = sourceRules_[source];
                     double f = 0;
                     for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, rule);
                     return f;
                 };
-                gatherTerms(commonLeaf, P.centroid, faces, kernel, visibility, false, row);
+                gatherTerms(commonLeaf, P.centroid, [&](const PatchPolygon& q) { return faces(n, q); }, kernel, visibility, false, row);
+            } else if (pointCount == 4) {
+                // The four points lie in different leaves, whose chains share most of their links (the
+                // coarse ones): each element of the chains is walked once, with the mask of the points
+                // below it, and each of its terms takes the kernel at those points (a walk, source
+                // expansion and merge per point cost as much as the kernels).
+                chain.clear();
+                for (std::size_t i = 0; i < 4; ++i)
+                    for (ElementIndex e = leaves[i]; e != kNoElement; e = tree_.parent(e)) {
+                        auto it = std::find_if(chain.begin(), chain.end(), [&](const auto& c) { return c.first == e; });
+                        if (it == chain.end()) chain.emplace_back(e, 1u << i);
+                        else it->second |= 1u << i;
+                    }
+                const glm::dvec3& n = tree_.polygon(chain.front().first).normal;
+                for (const auto& [e, mask] : chain) {
+                    const auto kernel = [&, mask = mask](ElementIndex source, const PatchPolygon& q) {
+                        const hierarchical::SourceRule& rule = sourceRules_[source];
+                        double f = 0;
+                        for (std::size_t i = 0; i < 4; ++i)
+                            if ((mask >> i) & 1u) f += weights[i] * kernelAt(points[i], n, q, rule);
+                        return f;
+                    };
+                    // gatherTerms' test for a link all of whose rays were blocked, at each point below.
+                    const auto brightHidden = [&, mask = mask](const Link& link) {
+                        const PatchPolygon& q = tree_.polygon(link.source);
+                        for (std::size_t i = 0; i < 4; ++i) {
+                            if (!((mask >> i) & 1u) || leaves[i] >= pushedIrradiance_.size()) continue;
+                            const glm::dvec3 d = q.centroid - points[i];
+                            if (maxBand(radiosity[link.source]) * q.area >
+                                kBrightHidden * maxBand(pushedIrradiance_[leaves[i]]) * std::numbers::pi * glm::dot(d, d))
+                                return true;
+                        }
+                        return false;
+                    };
+                    for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+                        const std::uint32_t i = receiverLinks_[k];
+                        if (links_[i].formFactor <= 0 && !links_[i].partiallyVisible() && !brightHidden(links_[i])) continue;
+                        if (!faces(n, tree_.polygon(links_[i].source))) continue;
+                        expandSource(i, links_[i].source, P.centroid, kernel, visibility, row);
+                    }
+                }
             }
             const auto gatherAt = [&](const glm::dvec3& x, double weight) {
                 const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
@@ -284,7 +328,7 @@ void HierarchicalSolver::buildPatchRows() {
                     leaf, x, [&](const PatchPolygon& q) { return mayFace(x, n, q); },
                     [&](ElementIndex source, const PatchPolygon& q) { return weight * kernelAt(x, n, q, sourceRules_[source]); }, visibility, false, row);
             };
-            if (!wholePatch && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
+            if (pointCount != 4 && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
             std::size_t kept = 0;
             for (const GatherTerm& term : row) {
                 std::int32_t& slot = rowSlot[term.source];
