@@ -22,6 +22,34 @@
 
 namespace radiant::hierarchical {
 
+/// atan2(y, x) for y >= 0 (not both zero): Cephes' atan (S. L. Moshier, range reduction by tan(pi/8)
+/// and tan(3 pi/8), a 4/5 rational in t^2), within 5e-16 of std::atan2 on 20M random pairs over 12
+/// decades (scratch check), at about half its cost: glibc's correctly rounded atan2 was a tenth of the
+/// hierarchical solve's CPU.
+inline double angleOf(double y, double x) {
+    constexpr double kTan3PiOver8 = 2.41421356237309504880, kMoreBits = 6.123233995736765886130e-17;
+    const double ax = std::abs(x);
+    double offset = 0, extra = 0, t = 0;
+    if (y > kTan3PiOver8 * ax) {
+        offset = std::numbers::pi / 2;
+        extra = kMoreBits;
+        t = -ax / y;
+    } else if (y <= 0.66 * ax) {
+        t = y / ax;
+    } else {
+        offset = std::numbers::pi / 4;
+        extra = 0.5 * kMoreBits;
+        t = (y - ax) / (y + ax);
+    }
+    const double z = t * t;
+    const double p = (((-8.750608600031904122785e-1 * z - 1.615753718733365076637e1) * z - 7.500855792314704667340e1) * z -
+                      1.228866684490136173410e2) * z - 6.485021904942025371773e1;
+    const double q = ((((z + 2.485846490142306297962e1) * z + 1.650270098316988542046e2) * z + 4.328810604912902668951e2) * z +
+                      4.853903996359136964868e2) * z + 1.945506571482613964425e2;
+    const double angle = offset + (t * (z * p / q) + t + extra);
+    return x < 0 ? std::numbers::pi - angle : angle;
+}
+
 /// Exact unoccluded F from a differential area at x (unit normal n) to `polygon`; 0 when x sees the
 /// polygon's back or nothing of it lies above x's tangent plane.
 inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& polygon) {
@@ -62,7 +90,7 @@ inline double pointToElementFormFactor(const glm::dvec3& x, const glm::dvec3& n,
         const double length = glm::length(c);
         if (length <= 0) continue;  // x on this edge's line: the edge subtends no angle
         // atan2 of |sin| and cos keeps gamma accurate for nearly parallel R_i (acos does not).
-        const double gamma = std::atan2(length, glm::dot(r0, r1));
+        const double gamma = angleOf(length, glm::dot(r0, r1));
         sum += gamma * glm::dot(n, c) / length;
     }
     return std::max(0.0, sum / (2 * std::numbers::pi));
