@@ -507,12 +507,12 @@ inline glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
 /// them weighs; `unblocked`, the plain fraction of rays that got through.
 inline double elementVisibilityOnce(double& unblocked, const PatchPolygon& a, const PatchPolygon& b, const RayCaster& caster, int rays,
                                     std::uint64_t seed) {
-    const double n = rays;
+    const double inverse = 1.0 / rays;
     const std::array<double, 4> shift{unitInterval(mix(seed ^ 0xA5A5A5A5ull)), unitInterval(mix(seed ^ 0x5A5A5A5Aull)),
                                       unitInterval(mix(seed ^ 0x3C3C3C3Cull)), unitInterval(mix(seed ^ 0xC3C3C3C3ull))};
     constexpr double kInset = 1e-4;  // of the element's parameter range
     const auto stratum = [&](int i, std::uint64_t bits, double offset) {
-        const double t = (i + unitInterval(bits)) / n + offset;
+        const double t = (i + unitInterval(bits)) * inverse + offset;
         return kInset + (1 - 2 * kInset) * (t - std::floor(t));
     };
     double seen = 0, total = 0;
@@ -522,6 +522,12 @@ inline double elementVisibilityOnce(double& unblocked, const PatchPolygon& a, co
     std::array<glm::dvec3, kBatch> from, to;
     std::array<double, kBatch> weights{};
     std::array<bool, kBatch> blocked{};
+    // The strata k, (3k + 1) mod rays, (k + 1) mod rays and (3k + 2) mod rays, stepped without a division.
+    const auto wrap = [rays](int v) {
+        while (v >= rays) v -= rays;
+        return v;
+    };
+    int column = wrap(1), next = wrap(1), column2 = wrap(2);
     for (int first = 0; first < rays; first += kBatch) {
         const int count = std::min(kBatch, rays - first);
         for (int i = 0; i < count; ++i) {
@@ -531,8 +537,11 @@ inline double elementVisibilityOnce(double& unblocked, const PatchPolygon& a, co
             const std::uint64_t h2 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 1);
             const std::uint64_t h3 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 2);
             const std::uint64_t h4 = mix(seed + static_cast<std::uint64_t>(k) * 4 + 3);
-            from[j] = pointOn(a, stratum(k, h1, shift[0]), stratum((3 * k + 1) % rays, h2, shift[1]));
-            to[j] = pointOn(b, stratum((k + 1) % rays, h3, shift[2]), stratum((3 * k + 2) % rays, h4, shift[3]));
+            from[j] = pointOn(a, stratum(k, h1, shift[0]), stratum(column, h2, shift[1]));
+            to[j] = pointOn(b, stratum(next, h3, shift[2]), stratum(column2, h4, shift[3]));
+            column = wrap(column + 3);
+            column2 = wrap(column2 + 3);
+            next = wrap(next + 1);
             // Each ray weighted by the point-to-point kernel: the share of the form factor, not of the
             // area pairs (they differ where a blocker sits close to one element, at a block's foot).
             const glm::dvec3 d = to[j] - from[j];
