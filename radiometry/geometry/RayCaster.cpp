@@ -278,37 +278,54 @@ bool RayCaster::occluded(const glm::dvec3& a, const glm::dvec3& b) const {
     return ray.tfar < 0;
 }
 
+namespace {
+
+/// One packet of up to W segments through rtcOccluded4 or rtcOccluded8 (see RayCaster::occluded).
+template <class Packet, std::size_t W>
+void occludedPacket(RTCScene scene, const TriangleTable& table, std::span<const glm::dvec3> a, std::span<const glm::dvec3> b,
+                    std::span<bool> blocked) {
+    QueryContext context = makeContext(table, a[0], b[0], true);
+    context.starts = a.data();
+    context.ends = b.data();
+    alignas(32) Packet rays{};
+    alignas(32) std::array<int, W> valid{};
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        const glm::dvec3 segment = b[i] - a[i];
+        const double length = glm::length(segment);
+        if (!(length > 0)) continue;  // an empty segment meets nothing
+        const double epsilon = std::min(table.planeTolerance, kRelativeSegmentEpsilon * length);
+        const glm::dvec3 origin = a[i] - table.origin, direction = segment / length;
+        rays.org_x[i] = static_cast<float>(origin.x);
+        rays.org_y[i] = static_cast<float>(origin.y);
+        rays.org_z[i] = static_cast<float>(origin.z);
+        rays.dir_x[i] = static_cast<float>(direction.x);
+        rays.dir_y[i] = static_cast<float>(direction.y);
+        rays.dir_z[i] = static_cast<float>(direction.z);
+        rays.tnear[i] = static_cast<float>(epsilon);
+        rays.tfar[i] = static_cast<float>(std::min(length - epsilon, static_cast<double>(std::numeric_limits<float>::max())));
+        rays.mask[i] = 0xFFFFFFFFu;
+        rays.id[i] = static_cast<unsigned>(i);
+        valid[i] = -1;
+    }
+    if constexpr (W == 4)
+        rtcOccluded4(valid.data(), scene, &context.embree, &rays);
+    else
+        rtcOccluded8(valid.data(), scene, &context.embree, &rays);
+    for (std::size_t i = 0; i < a.size(); ++i) blocked[i] = valid[i] != 0 && rays.tfar[i] < 0;
+}
+
+} // namespace
+
 void RayCaster::occluded(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<bool> blocked) const {
-    // Packets of 8 through Embree's 8-wide traversal: the segments of one visibility set run between
-    // the same two elements, so they share most of the BVH's nodes, and one call replaces eight.
+    // Packets through Embree's 4- and 8-wide traversal: the segments of one visibility set run between
+    // the same two elements, so they share most of the BVH's nodes, and one call replaces several.
     constexpr std::size_t kWidth = 8;
     for (std::size_t first = 0; first < a.size(); first += kWidth) {
         const std::size_t count = std::min(kWidth, a.size() - first);
-        QueryContext context = makeContext(*impl_, a[first], b[first], true);
-        context.starts = a.data() + first;
-        context.ends = b.data() + first;
-        alignas(32) RTCRay8 rays{};
-        alignas(32) std::array<int, kWidth> valid{};
-        for (std::size_t i = 0; i < count; ++i) {
-            const glm::dvec3 segment = b[first + i] - a[first + i];
-            const double length = glm::length(segment);
-            if (!(length > 0)) continue;  // an empty segment meets nothing
-            const double epsilon = std::min(impl_->planeTolerance, kRelativeSegmentEpsilon * length);
-            const glm::dvec3 origin = a[first + i] - impl_->origin, direction = segment / length;
-            rays.org_x[i] = static_cast<float>(origin.x);
-            rays.org_y[i] = static_cast<float>(origin.y);
-            rays.org_z[i] = static_cast<float>(origin.z);
-            rays.dir_x[i] = static_cast<float>(direction.x);
-            rays.dir_y[i] = static_cast<float>(direction.y);
-            rays.dir_z[i] = static_cast<float>(direction.z);
-            rays.tnear[i] = static_cast<float>(epsilon);
-            rays.tfar[i] = static_cast<float>(std::min(length - epsilon, static_cast<double>(std::numeric_limits<float>::max())));
-            rays.mask[i] = 0xFFFFFFFFu;
-            rays.id[i] = static_cast<unsigned>(i);
-            valid[i] = -1;
-        }
-        rtcOccluded8(valid.data(), impl_->scene, &context.embree, &rays);
-        for (std::size_t i = 0; i < count; ++i) blocked[first + i] = valid[i] != 0 && rays.tfar[i] < 0;
+        if (count <= 4)
+            occludedPacket<RTCRay4, 4>(impl_->scene, *impl_, a.subspan(first, count), b.subspan(first, count), blocked.subspan(first, count));
+        else
+            occludedPacket<RTCRay8, 8>(impl_->scene, *impl_, a.subspan(first, count), b.subspan(first, count), blocked.subspan(first, count));
     }
 }
 
