@@ -294,6 +294,44 @@ TEST_CASE("ray caster: occlusion in the Cornell box agrees with clipping segment
     CHECK_FALSE(empty[0]);
 }
 
+TEST_CASE("ray caster: packets leave out only the faces bounding the scene") {
+    // A floor (it bounds the scene: everything is above it) with a wall standing across its middle
+    // (floor corners on both sides of its plane: it can block). Segments from the floor on one side
+    // to the floor on the other pass over the wall's top edge or through the wall; a plane test on
+    // the wall's rectangle says which. Segments on one side are never blocked.
+    const Scene scene = sceneOf({
+        {"floor", {faceOf({{0, 0, 0}, {0, 0, 1}, {2, 0, 1}, {2, 0, 0}})}},
+        {"wall", {faceOf({{1, 0, 0}, {1, 0.3, 0}, {1, 0.3, 1}, {1, 0, 1}})}},
+    });
+    const RayCaster rays(scene);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    std::vector<glm::dvec3> from, to;
+    std::vector<char> expected;
+    for (int i = 0; i < 4000; ++i) {
+        const bool across = i % 2 == 0;
+        const glm::dvec3 p{0.9 * uniform(random), 0.5 * uniform(random) * (i % 3 == 0 ? 1 : 0), uniform(random)};
+        const glm::dvec3 q{across ? 1.1 + 0.9 * uniform(random) : 0.9 * uniform(random), 0.5 * uniform(random), uniform(random)};
+        const double t = across ? (1 - p.x) / (q.x - p.x) : -1;
+        const glm::dvec3 atWall = p + t * (q - p);
+        from.push_back(p);
+        to.push_back(q);
+        expected.push_back(across && atWall.y < 0.3 && atWall.z > 0 && atWall.z < 1 ? 1 : 0);
+    }
+    int disagreements = 0, blocked = 0;
+    for (std::size_t first = 0; first < from.size(); first += 8) {
+        std::array<bool, 8> answers{};
+        rays.occluded(std::span<const glm::dvec3>(from.data() + first, 8), std::span<const glm::dvec3>(to.data() + first, 8),
+                      std::span<bool>(answers));
+        for (std::size_t i = 0; i < 8; ++i) {
+            disagreements += answers[i] != (expected[first + i] != 0) ? 1 : 0;
+            blocked += expected[first + i];
+        }
+    }
+    CHECK(blocked > 400);
+    CHECK(disagreements <= 2);
+}
+
 TEST_CASE("visibility: concurrent queries on one ray caster agree with sequential ones") {
     // The Cornell box's blocks hide part of the floor from the ceiling: fractions strictly between
     // 0 and 1, computed for the same pairs on two threads at once and then on one.
