@@ -9,6 +9,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include <glm/vec3.hpp>
 
@@ -43,6 +44,12 @@ public:
     /// True when something blocks the open segment between a and b. The end points lie on surfaces;
     /// the segment is shortened by a relative epsilon at both ends so neither end's own face counts.
     [[nodiscard]] bool occluded(const glm::dvec3& a, const glm::dvec3& b) const;
+    /// The same for segments a[i]-b[i] whose ends lie on the scene's faces (or in front of every face
+    /// bounding the scene), traced as packets (faster for segments that run close together) through
+    /// the faces that can block such a segment: faces whose plane has the whole scene on or in front
+    /// of it (a room's walls, floor and ceiling) are left out. blocked[i] tells whether segment i is
+    /// blocked. The spans have one size.
+    void occluded(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<bool> blocked) const;
 
     /// Ray casters constructed in this process so far: a BVH build is the cost the lab shares, and
     /// tests count them. Atomic; it only counts, nothing depends on it.

@@ -10,7 +10,6 @@
 #include <atomic>
 #include <cmath>
 #include <numbers>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -32,19 +31,45 @@ void HierarchicalSolver::indexLinksByReceiver() {
 
 namespace {
 
-/// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x and `exact` is
-/// not asked for, the 2 x 2 Gauss rule over it (within 0.2% there, a quarter of the cost: the patch
-/// rows of a 2,000-patch mesh took 0.25 s of CPU with the contour integral alone).
-double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, bool exact) {
-    if (exact) return hierarchical::pointToElementFormFactor(x, n, q);
-    const double nearest = std::max(0.0, glm::length(q.centroid - x) - std::sqrt(q.area));
-    const double ratio = nearest * nearest / q.area;
-    if (ratio > hierarchical::kFarFieldDistanceSquaredOverArea) return hierarchical::pointToElementFormFactor(x, n, q, true);
-    if (ratio > hierarchical::kGaussDistanceSquaredOverArea) {
-        const double f = hierarchical::gaussFormFactor(x, n, q);
+/// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x, a Gauss rule of
+/// the point kernel over it by q's precomputed nodes: 2 x 2 beyond kFarFieldDistanceSquaredOverArea
+/// (within 0.2% there, a quarter of the cost: the patch rows of a 2,000-patch mesh took 0.25 s of CPU
+/// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea.
+double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, const hierarchical::SourceRule& rule) {
+    // (|centroid - x| - sqrt(A))^2 / A against the rules' thresholds, as squared distances.
+    const glm::dvec3 d = q.centroid - x;
+    const double distance2 = glm::dot(d, d);
+    if (distance2 > rule.gaussDistance2) {
+        const double f = hierarchical::ruleFormFactor(x, n, q, rule, distance2 > rule.farDistance2);
         if (f >= 0) return f;
     }
     return hierarchical::pointToElementFormFactor(x, n, q);
+}
+
+/// F(p -> q) unoccluded, for a receiver small against the link it inherits: the receiver's mean of
+/// kernelAt by a 3 x 3 Gauss rule over it when close (gaussMeanKernel's rule), the far-field kernel at
+/// its centroid when the source is far and the receiver small against the distance too (the kernel is
+/// then nearly linear across it), else the mean at its four children's centroids. kernelAt, not
+/// Lambert's integral, wherever q is small for its distance from the point (within 0.006% there; the
+/// integral's four atan2 per point were most of the leaf rows' kernel time).
+double meanKernelAt(const PatchPolygon& p, const PatchPolygon& q, const hierarchical::SourceRule& rule) {
+    const glm::dvec3 apart = p.centroid - q.centroid;
+    const double reach = std::sqrt(p.area) + std::sqrt(q.area);
+    const double distance2 = glm::dot(apart, apart);
+    if (distance2 < 2.25 * reach * reach) {
+        double sum = 0;
+        hierarchical::forGaussPoints(p, 3, [&](const glm::dvec3& x, double weight) { sum += weight * kernelAt(x, p.normal, q, rule); });
+        return sum;
+    }
+    const double nearestSample = std::max(0.0, std::sqrt(distance2) - std::sqrt(p.area));
+    const bool far = nearestSample * nearestSample > hierarchical::kFarFieldDistanceSquaredOverArea * q.area;
+    if (far && distance2 > hierarchical::kFarFieldDistanceSquaredOverArea * p.area) {
+        const double f = hierarchical::ruleFormFactor(p.centroid, p.normal, q, rule, true);
+        if (f >= 0) return f;
+    }
+    double sum = 0;
+    for (const glm::dvec3& x : hierarchical::childCentroids(p)) sum += kernelAt(x, p.normal, q, rule);
+    return 0.25 * sum;
 }
 
 /// Whether x (unit normal n) may see some of q's front: x in front of q's plane and some corner of q
@@ -114,7 +139,7 @@ void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, c
         for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(link, c, x, kernel, visibility, out);
         return;
     }
-    const double f = kernel(q);
+    const double f = kernel(source, q);
     if (f <= 0) return;
     const double v = visibility(link, source, q);
     if (v > 0) out.push_back({source, static_cast<float>(f * v)});
@@ -133,8 +158,17 @@ bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
     return clear;
 }
 
+void HierarchicalSolver::buildSourceRules() {
+    if (sourceRules_.size() == tree_.size()) return;
+    sourceRules_.resize(tree_.size());
+    parallelChunks(tree_.size(), threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = from; e < to; ++e) sourceRules_[e] = hierarchical::makeSourceRule(tree_.polygon(static_cast<ElementIndex>(e)));
+    });
+}
+
 void HierarchicalSolver::buildPatchRows() {
     linkShaft_.assign(occluderBegin_.empty() ? 0 : links_.size(), 0);
+    buildSourceRules();
     std::vector<std::vector<GatherTerm>> rows(patches_.size());
     const auto& radiosity = tree_.radiosity();
     parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
@@ -145,7 +179,13 @@ void HierarchicalSolver::buildPatchRows() {
         // sphere room's sphere was 6.5% over Gauss-Seidel with the expanded leaf rows, 2.3% with rays
         // for the partial links alone), so each such term casts rays from the patch, once per patch
         // (rays per patch point would make the display noisy; the probe's point casts its own).
-        std::unordered_map<std::uint64_t, double> termVisibility;
+        // Per element, scratch of this thread's current patch (reset through the row after each):
+        // the term's visibility from the patch (negative: not yet cast) and its place in the row
+        // (-1: not in it), so that merging a row's terms costs no sort.
+        std::vector<double> termVisibility(tree_.size(), -1.0);
+        std::vector<std::int32_t> rowSlot(tree_.size(), -1);
+        std::vector<ElementIndex> cast;
+        std::vector<std::pair<ElementIndex, unsigned>> chain;  // the split patch's chains, see below
         const PatchPolygon* patchPolygon = nullptr;
         // The deepest element that holds the whole patch, and whether `e` is it or one of its ancestors.
         ElementIndex home = kNoElement;
@@ -178,16 +218,19 @@ void HierarchicalSolver::buildPatchRows() {
                 shaftClear(link))
                 return 1.0;
             // Rays from the patch to the term: the same whichever link of the patch's points asked.
-            const std::uint64_t key = term;
-            const auto [entry, inserted] = termVisibility.try_emplace(key, 0.0);
-            if (inserted)
-                entry->second = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : kDimTermVisibilityRays, hierarchical::mix(patchSeed ^ key));
-            return entry->second;
+            double& known = termVisibility[term];
+            if (known < 0) {
+                known = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : kDimTermVisibilityRays,
+                                                        hierarchical::mix(patchSeed ^ static_cast<std::uint64_t>(term)));
+                cast.push_back(term);
+            }
+            return known;
         };
         for (std::size_t p = from; p < to; ++p) {
             const PatchSample& patch = patches_[p];
             std::vector<GatherTerm>& row = rows[p];
-            termVisibility.clear();
+            for (const ElementIndex term : cast) termVisibility[term] = -1.0;
+            cast.clear();
             patchPolygon = &patch.polygon;
             patchSeed = hierarchical::mix(options_.seed ^ 0x9a7c4ull ^ p);
             // The patch's mean irradiance by a Gauss rule: 3 x 3 where the leaves are finer than the
@@ -206,32 +249,76 @@ void HierarchicalSolver::buildPatchRows() {
             std::array<double, 4> weights{};
             std::size_t pointCount = 0;
             ElementIndex commonLeaf = kNoElement;
+            std::array<ElementIndex, 4> leaves{};
             if (order == 2 && patch.polygon.count >= 3) {
                 hierarchical::forGaussPoints(patch.polygon, 2, [&](const glm::dvec3& x, double weight) {
                     points[pointCount] = x;
                     weights[pointCount++] = weight;
                 });
                 for (std::size_t i = 0; i < pointCount; ++i) {
-                    const ElementIndex leaf = tree_.locate(patch.surface, patch.face, points[i]);
-                    commonLeaf = i == 0 || leaf == commonLeaf ? leaf : kNoElement;
+                    leaves[i] = tree_.locate(patch.surface, patch.face, points[i]);
+                    commonLeaf = i == 0 || leaves[i] == commonLeaf ? leaves[i] : kNoElement;
                 }
             }
             const bool wholePatch = pointCount == 4 && commonLeaf != kNoElement;
+            const PatchPolygon& P = patch.polygon;
+            // Whether the patch may see some of q's front (the kernel is zero otherwise): some corner of
+            // the patch in front of q's plane and some corner of q above the patch's plane.
+            const auto faces = [&](const glm::dvec3& n, const PatchPolygon& q) {
+                bool inFront = false, above = false;
+                for (const glm::dvec3& v : P.corners()) inFront = inFront || glm::dot(q.normal, v - q.centroid) > 0;
+                for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
+                return inFront && above;
+            };
             if (wholePatch) {
-                const PatchPolygon& P = patch.polygon;
                 const glm::dvec3& n = tree_.polygon(commonLeaf).normal;
-                const auto faces = [&](const PatchPolygon& q) {
-                    bool inFront = false, above = false;
-                    for (const glm::dvec3& v : P.corners()) inFront = inFront || glm::dot(q.normal, v - q.centroid) > 0;
-                    for (const glm::dvec3& v : q.corners()) above = above || glm::dot(n, v - P.centroid) > 0;
-                    return inFront && above;
-                };
-                const auto kernel = [&](const PatchPolygon& q) {
+                const auto kernel = [&](ElementIndex source, const PatchPolygon& q) {
+                    const hierarchical::SourceRule& rule = sourceRules_[source];
                     double f = 0;
-                    for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, false);
+                    for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, rule);
                     return f;
                 };
-                gatherTerms(commonLeaf, P.centroid, faces, kernel, visibility, false, row);
+                gatherTerms(commonLeaf, P.centroid, [&](const PatchPolygon& q) { return faces(n, q); }, kernel, visibility, false, row);
+            } else if (pointCount == 4) {
+                // The four points lie in different leaves, whose chains share most of their links (the
+                // coarse ones): each element of the chains is walked once, with the mask of the points
+                // below it, and each of its terms takes the kernel at those points (a walk, source
+                // expansion and merge per point cost as much as the kernels).
+                chain.clear();
+                for (std::size_t i = 0; i < 4; ++i)
+                    for (ElementIndex e = leaves[i]; e != kNoElement; e = tree_.parent(e)) {
+                        auto it = std::find_if(chain.begin(), chain.end(), [&](const auto& c) { return c.first == e; });
+                        if (it == chain.end()) chain.emplace_back(e, 1u << i);
+                        else it->second |= 1u << i;
+                    }
+                const glm::dvec3& n = tree_.polygon(chain.front().first).normal;
+                for (const auto& [e, mask] : chain) {
+                    const auto kernel = [&, mask = mask](ElementIndex source, const PatchPolygon& q) {
+                        const hierarchical::SourceRule& rule = sourceRules_[source];
+                        double f = 0;
+                        for (std::size_t i = 0; i < 4; ++i)
+                            if ((mask >> i) & 1u) f += weights[i] * kernelAt(points[i], n, q, rule);
+                        return f;
+                    };
+                    // gatherTerms' test for a link all of whose rays were blocked, at each point below.
+                    const auto brightHidden = [&, mask = mask](const Link& link) {
+                        const PatchPolygon& q = tree_.polygon(link.source);
+                        for (std::size_t i = 0; i < 4; ++i) {
+                            if (!((mask >> i) & 1u) || leaves[i] >= pushedIrradiance_.size()) continue;
+                            const glm::dvec3 d = q.centroid - points[i];
+                            if (maxBand(radiosity[link.source]) * q.area >
+                                kBrightHidden * maxBand(pushedIrradiance_[leaves[i]]) * std::numbers::pi * glm::dot(d, d))
+                                return true;
+                        }
+                        return false;
+                    };
+                    for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
+                        const std::uint32_t i = receiverLinks_[k];
+                        if (links_[i].formFactor <= 0 && !links_[i].partiallyVisible() && !brightHidden(links_[i])) continue;
+                        if (!faces(n, tree_.polygon(links_[i].source))) continue;
+                        expandSource(i, links_[i].source, P.centroid, kernel, visibility, row);
+                    }
+                }
             }
             const auto gatherAt = [&](const glm::dvec3& x, double weight) {
                 const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
@@ -239,18 +326,21 @@ void HierarchicalSolver::buildPatchRows() {
                 const glm::dvec3& n = tree_.polygon(leaf).normal;
                 gatherTerms(
                     leaf, x, [&](const PatchPolygon& q) { return mayFace(x, n, q); },
-                    [&](const PatchPolygon& q) { return weight * kernelAt(x, n, q, false); }, visibility, false, row);
+                    [&](ElementIndex source, const PatchPolygon& q) { return weight * kernelAt(x, n, q, sourceRules_[source]); }, visibility, false, row);
             };
-            if (!wholePatch && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
-            std::sort(row.begin(), row.end(), [](const GatherTerm& a, const GatherTerm& b) { return a.source < b.source; });
+            if (pointCount != 4 && patch.polygon.count >= 3) hierarchical::forGaussPoints(patch.polygon, order, gatherAt);
             std::size_t kept = 0;
             for (const GatherTerm& term : row) {
-                if (kept > 0 && row[kept - 1].source == term.source)
-                    row[kept - 1].weight += term.weight;
-                else
+                std::int32_t& slot = rowSlot[term.source];
+                if (slot >= 0) {
+                    row[static_cast<std::size_t>(slot)].weight += term.weight;
+                } else {
+                    slot = static_cast<std::int32_t>(kept);
                     row[kept++] = term;
+                }
             }
             row.resize(kept);
+            for (const GatherTerm& term : row) rowSlot[term.source] = -1;
         }
     });
     patchRowBegin_.assign(patches_.size() + 1, 0);
@@ -259,6 +349,7 @@ void HierarchicalSolver::buildPatchRows() {
     patchRows_.reserve(patchRowBegin_.back());
     for (const auto& row : rows) patchRows_.insert(patchRows_.end(), row.begin(), row.end());
     patchRowsCurrent_ = true;
+    sourceRules_ = {};
 }
 
 Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
@@ -288,7 +379,7 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
     };
     gatherTerms(
         leaf, x, [&](const PatchPolygon& q) { return mayFace(x, element.normal, q); },
-        [&](const PatchPolygon& q) { return hierarchical::pointToElementFormFactor(x, element.normal, q); }, rays,
+        [&](ElementIndex, const PatchPolygon& q) { return hierarchical::pointToElementFormFactor(x, element.normal, q); }, rays,
         caster_ != nullptr, terms);
     Rgb irradiance(0.0);
     for (const GatherTerm& term : terms) irradiance += static_cast<double>(term.weight) * tree_.radiosity()[term.source];
@@ -298,6 +389,7 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
 
 void HierarchicalSolver::buildLeafRows() {
     const std::size_t n = tree_.size();
+    buildSourceRules();  // kept for the patch rows, built next
     std::vector<std::vector<GatherTerm>> rows(n);
     struct Term {
         ElementIndex source;
@@ -341,7 +433,7 @@ void HierarchicalSolver::buildLeafRows() {
                             terms.push_back({q, link.formFactor, 1});
                             return;
                         }
-                        const double f = hierarchical::meanKernel(p, polygon);
+                        const double f = meanKernelAt(p, polygon, sourceRules_[q]);
                         if (f <= 0) return;
                         const double v = perTerm ? hierarchical::elementVisibility(p, polygon, *caster_, kTermVisibilityRays,
                                                                                    hierarchical::mix(options_.seed ^ 0x1eafull ^ ((static_cast<std::uint64_t>(leaf) << 32) | q)))

@@ -36,6 +36,10 @@
 
 namespace radiant {
 
+namespace hierarchical {
+struct SourceRule;
+}
+
 /// Element resolution asked of the hierarchy on top of the refinement oracle.
 struct HierarchicalRefinement {
     /// 0: none (elements exist only where the oracle split them). > 0 (m^2): every leaf larger than
@@ -165,7 +169,7 @@ private:
     /// Appends kernel(q) x visibility for every link of `leaf` and its ancestors (`everyLink`: also
     /// those whose rays found them hidden), q each link's source or, where that is large for its
     /// distance from `x`, its descendants (expandSource). `faces(q)`: whether the receiving point or
-    /// patch may see any of q's front (a cheap test before the kernel); `kernel(q)`: the weighted
+    /// patch may see any of q's front (a cheap test before the kernel); `kernel(source, q)`: the weighted
     /// form factor from the point or patch to q.
     template <class Faces, class Kernel, class Visibility>
     void gatherTerms(ElementIndex leaf, const glm::dvec3& x, Faces&& faces, Kernel&& kernel, Visibility&& visibility,
@@ -177,6 +181,8 @@ private:
     void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, Kernel& kernel, Visibility& visibility,
                       std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
+    /// sourceRules_ for every element (kept from the leaf rows to the patch rows of the same step).
+    void buildSourceRules();
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
     /// Each leaf's gather row: every link of the leaf and its ancestors with the form factor from the
@@ -240,6 +246,8 @@ private:
     static constexpr std::size_t kMaxShaftOccluders = 256;
     /// Per link while the patch rows are built (shaftClear): 0 not yet tested, 1 clear, 2 maybe blocked.
     mutable std::vector<std::uint8_t> linkShaft_;
+    /// Per element, its quadrature nodes as a source (only while the leaf and patch rows are built).
+    std::vector<hierarchical::SourceRule> sourceRules_;
     std::vector<std::size_t> patchRowBegin_;
     std::vector<GatherTerm> patchRows_;
     bool patchRowsCurrent_ = false;

@@ -142,7 +142,9 @@ TEST_CASE("hierarchical scaling: 4x the elements, links per leaf at most 4^(1/3)
 
 } // TEST_SUITE
 
+#include <algorithm>
 #include <numbers>
+#include <random>
 
 #include <initializer_list>
 #include <vector>
@@ -198,6 +200,9 @@ TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where r
             if (estimate < 0) return;  // straddles the horizon: the exact kernel is used
             ++compared;
             CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(0.002));
+            // The rows' precomputed nodes give the same rule.
+            CHECK(hierarchical::ruleFormFactor(x, normal, source, hierarchical::makeSourceRule(source), true) ==
+                  doctest::Approx(estimate).scale(0).epsilon(1e-12));
             // No point sees more than a differential source facing it squarely would give.
             CHECK(exact <= source.area / (std::numbers::pi * r * r) * 1.01);
         });
@@ -229,8 +234,32 @@ TEST_CASE("hierarchical gather kernel: the 3 x 3 Gauss rule within 0.02% of Lamb
             if (estimate < 0) return;  // straddles the horizon: the exact kernel is used
             ++compared;
             CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(2e-4));
+            CHECK(hierarchical::ruleFormFactor(x, normal, source, hierarchical::makeSourceRule(source), false) ==
+                  doctest::Approx(estimate).scale(0).epsilon(1e-12));
         });
     CHECK(compared > 120);
+}
+
+TEST_CASE("hierarchical exact kernel: its angle agrees with std::atan2 to 1e-15 over every quadrant used") {
+    // angleOf replaces libm's atan2 in Lambert's contour integral: y >= 0, x of either sign, over 12
+    // decades of the ratio, both on the branch boundaries (x = y, x = -y, x = 0) and between them.
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> uniform(-1, 1);
+    double worst = 0;
+    for (int i = 0; i < 200000; ++i) {
+        const double y = std::abs(uniform(random)) * std::pow(10.0, 6 * uniform(random));
+        double x = uniform(random) * std::pow(10.0, 6 * uniform(random));
+        if (i % 7 == 0) x = 0;
+        if (i % 11 == 0) x = y;
+        if (i % 13 == 0) x = -y;
+        if (i % 17 == 0) x = 2.41421356237309504880 * y * (1 + 1e-15);
+        if (y == 0 && x == 0) continue;
+        worst = std::max(worst, std::abs(hierarchical::angleOf(y, x) - std::atan2(y, x)));
+    }
+    CHECK(worst < 1e-15);
+    CHECK(hierarchical::angleOf(1, 0) == doctest::Approx(std::numbers::pi / 2).scale(0).epsilon(1e-15));
+    CHECK(hierarchical::angleOf(0, -1) == doctest::Approx(std::numbers::pi).scale(0).epsilon(1e-15));
+    CHECK(hierarchical::angleOf(0, 1) == 0);
 }
 
 } // TEST_SUITE

@@ -9,6 +9,7 @@
 #include <initializer_list>
 #include <numbers>
 #include <random>
+#include <span>
 #include <string>
 #include <thread>
 #include <vector>
@@ -260,14 +261,75 @@ TEST_CASE("ray caster: occlusion in the Cornell box agrees with clipping segment
     };
     const int segments = 20000;
     int disagreements = 0, blocked = 0;
+    std::vector<glm::dvec3> from, to;
+    std::vector<char> expectedAll;
     for (int i = 0; i < segments; ++i) {
         const glm::dvec3 p = pointOn(floor), q = pointOn(ceiling);
         const bool expected = crossesBlock(shortBlock, p, q) || crossesBlock(tallBlock, p, q);
         blocked += expected ? 1 : 0;
         disagreements += rays.occluded(p, q) != expected ? 1 : 0;
+        from.push_back(p);
+        to.push_back(q);
+        expectedAll.push_back(expected ? 1 : 0);
     }
     CHECK(blocked > segments / 10);     // the test exercises both outcomes
     CHECK(disagreements <= 2);          // float BVH against double planes: grazing hits may differ
+
+    // The same segments as packets (the span overload), in batches of 1 to 19 so that partly filled
+    // packets and several packets per call both occur; an empty segment is never blocked.
+    int packetDisagreements = 0;
+    std::size_t next = 0;
+    for (std::size_t batch = 1; next < from.size(); batch = batch % 19 + 1) {
+        const std::size_t count = std::min(batch, from.size() - next);
+        std::array<bool, 19> answers{};
+        rays.occluded(std::span<const glm::dvec3>(from.data() + next, count), std::span<const glm::dvec3>(to.data() + next, count),
+                      std::span<bool>(answers.data(), count));
+        for (std::size_t i = 0; i < count; ++i) packetDisagreements += answers[i] != (expectedAll[next + i] != 0) ? 1 : 0;
+        next += count;
+    }
+    CHECK(packetDisagreements <= 2);
+    const std::array<glm::dvec3, 2> same{floor.vertices[0] + glm::dvec3(0.1, 0, 0.1), floor.vertices[0] + glm::dvec3(0.1, 0, 0.1)};
+    std::array<bool, 1> empty{true};
+    rays.occluded(std::span<const glm::dvec3>(same.data(), 1), std::span<const glm::dvec3>(same.data() + 1, 1), std::span<bool>(empty));
+    CHECK_FALSE(empty[0]);
+}
+
+TEST_CASE("ray caster: packets leave out only the faces bounding the scene") {
+    // A floor (it bounds the scene: everything is above it) with a wall standing across its middle
+    // (floor corners on both sides of its plane: it can block). Segments from the floor on one side
+    // to the floor on the other pass over the wall's top edge or through the wall; a plane test on
+    // the wall's rectangle says which. Segments on one side are never blocked.
+    const Scene scene = sceneOf({
+        {"floor", {faceOf({{0, 0, 0}, {0, 0, 1}, {2, 0, 1}, {2, 0, 0}})}},
+        {"wall", {faceOf({{1, 0, 0}, {1, 0.3, 0}, {1, 0.3, 1}, {1, 0, 1}})}},
+    });
+    const RayCaster rays(scene);
+    std::mt19937_64 random(11);
+    std::uniform_real_distribution<double> uniform(0, 1);
+    std::vector<glm::dvec3> from, to;
+    std::vector<char> expected;
+    for (int i = 0; i < 4000; ++i) {
+        const bool across = i % 2 == 0;
+        const glm::dvec3 p{0.9 * uniform(random), 0.5 * uniform(random) * (i % 3 == 0 ? 1 : 0), uniform(random)};
+        const glm::dvec3 q{across ? 1.1 + 0.9 * uniform(random) : 0.9 * uniform(random), 0.5 * uniform(random), uniform(random)};
+        const double t = across ? (1 - p.x) / (q.x - p.x) : -1;
+        const glm::dvec3 atWall = p + t * (q - p);
+        from.push_back(p);
+        to.push_back(q);
+        expected.push_back(across && atWall.y < 0.3 && atWall.z > 0 && atWall.z < 1 ? 1 : 0);
+    }
+    int disagreements = 0, blocked = 0;
+    for (std::size_t first = 0; first < from.size(); first += 8) {
+        std::array<bool, 8> answers{};
+        rays.occluded(std::span<const glm::dvec3>(from.data() + first, 8), std::span<const glm::dvec3>(to.data() + first, 8),
+                      std::span<bool>(answers));
+        for (std::size_t i = 0; i < 8; ++i) {
+            disagreements += answers[i] != (expected[first + i] != 0) ? 1 : 0;
+            blocked += expected[first + i];
+        }
+    }
+    CHECK(blocked > 400);
+    CHECK(disagreements <= 2);
 }
 
 TEST_CASE("visibility: concurrent queries on one ray caster agree with sequential ones") {
