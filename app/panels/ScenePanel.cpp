@@ -9,6 +9,8 @@
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/OpeningPatchArea.h"
+#include "radiometry/solver/SolveDefaults.h"
 
 namespace radiant::app {
 namespace {
@@ -21,9 +23,18 @@ void row(const char* label, const char* format, auto... values) {
 
 } // namespace
 
-ScenePanel::ScenePanel(LiveSolve& live, double maxPatchArea)
-    : live_(live), maxPatchArea_(maxPatchArea), sliderAreaCm2_(static_cast<float>(maxPatchArea * kCm2PerM2)),
-      builtins_(builtinSceneNames()) {}
+ScenePanel::ScenePanel(LiveSolve& live, std::optional<double> maxPatchArea)
+    : live_(live), fixedArea_(maxPatchArea), maxPatchArea_(maxPatchArea.value_or(kSolveDefaults.maxPatchArea)),
+      sliderAreaCm2_(static_cast<float>(maxPatchArea_ * kCm2PerM2)), builtins_(builtinSceneNames()) {}
+
+double ScenePanel::patchAreaFor(const Scene& scene) {
+    if (fixedArea_) return *fixedArea_;
+    OpeningArea opening = openingPatchArea(scene);
+    maxPatchArea_ = opening.maxPatchArea;
+    sliderAreaCm2_ = static_cast<float>(maxPatchArea_ * kCm2PerM2);
+    openingReason_ = std::move(opening.reason);
+    return maxPatchArea_;
+}
 
 void ScenePanel::open(const std::string& nameOrPath) {
     error_.clear();
@@ -38,7 +49,8 @@ void ScenePanel::update() {
         return;
     }
     error_.clear();
-    live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{maxPatchArea_}});
+    const double area = patchAreaFor(*result->scene);
+    live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{area}});
 }
 
 void ScenePanel::draw() {
@@ -52,6 +64,11 @@ void ScenePanel::draw() {
             row("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
         else
             row("Patches", "%s", patches.c_str());
+        if (!snapshot.groupingReason.empty()) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("Grouping %s", snapshot.groupingReason.c_str());
+            ImGui::PopStyleColor();
+        }
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
@@ -117,13 +134,21 @@ void ScenePanel::drawMeshing() {
     }
     if (ImGui::IsItemDeactivatedAfterEdit() && std::abs(requested - maxPatchArea_) > 1e-12) {
         maxPatchArea_ = requested;
+        openingReason_.clear();
         live_.send(command::Remesh{MeshingOptions{requested}});
     }
-    if (ImGui::Checkbox("Group patches", &groupPatches_)) live_.send(command::SetGrouping{groupPatches_});
+    if (!openingReason_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Opened at %s", openingReason_.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (ImGui::Checkbox("Group patches", &groupPatches_))
+        live_.send(command::SetGrouping{groupPatches_ ? GroupingMode::Auto : GroupingMode::Off});
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box)\n"
-                          "share one radiosity, in groups of about the largest patch area:\n"
-                          "the unknowns follow the slider where the triangles are finer.\n"
+                          "share one radiosity, in groups of about the largest patch area, where\n"
+                          "that at least halves a surface's patches: the unknowns follow the slider\n"
+                          "where the triangles are finer. Unticked, every patch is an unknown.\n"
                           "Progressive, Jacobi and Gauss-Seidel solve groups; hierarchical does not.");
 }
 
