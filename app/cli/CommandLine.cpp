@@ -57,7 +57,10 @@ CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene,
     system.groups = std::move(choice.groups);
     system.groupingReason = std::move(choice.groupingReason);
     system.choice = std::move(choice.method);
-    if (grouping != GroupingMode::Off) std::fprintf(stderr, "radiant: grouping: %s\n", system.groupingReason.c_str());
+    // Said when it changes what is solved or what was asked; the ungrouped default is said in the
+    // JSON only, so a scene of large quads prints what it always printed.
+    if (system.groups || choice.methodTakesNoGroups || grouping == GroupingMode::On)
+        std::fprintf(stderr, "radiant: grouping: %s\n", system.groupingReason.c_str());
     if (!named)
         std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(system.choice.method)).c_str(),
                      system.choice.reason.c_str());

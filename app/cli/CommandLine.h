@@ -50,9 +50,10 @@ struct GroupingFlags {
 void addGroupingFlags(CLI::App& sub, GroupingFlags& flags, const std::string& what = "");
 
 /// What solve, probe and render solve: the mesh at --max-patch-area, its patch groups and the
-/// method, as chooseSystem decides them (DefaultGrouping.h). Unless --no-group-patches turned it
-/// off, the grouping and its reason are said on stderr in one line ("radiant: grouping: on: ..."),
-/// and a defaulted method in another ("radiant: method: hierarchical (12,000 patches: ...)").
+/// method, as chooseSystem decides them (DefaultGrouping.h). Where patches are grouped, a named
+/// method declines them, or --group-patches asked, the grouping and its reason are said on stderr
+/// in one line ("radiant: grouping: on: ..."); a defaulted method in another ("radiant: method:
+/// hierarchical (12,000 patches: ...)").
 struct CommandSystem {
     PatchMesh mesh;
     std::shared_ptr<const PatchGroups> groups;  ///< null: every patch an unknown

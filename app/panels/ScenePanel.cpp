@@ -64,7 +64,8 @@ void ScenePanel::draw() {
             row("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
         else
             row("Patches", "%s", patches.c_str());
-        if (!snapshot.groupingReason.empty()) {
+        // Said where it changes the unknowns; an ungrouped scene says why under the box's tooltip.
+        if (snapshot.groups) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
             ImGui::TextWrapped("Grouping %s", snapshot.groupingReason.c_str());
             ImGui::PopStyleColor();
@@ -144,12 +145,19 @@ void ScenePanel::drawMeshing() {
     }
     if (ImGui::Checkbox("Group patches", &groupPatches_))
         live_.send(command::SetGrouping{groupPatches_ ? GroupingMode::Auto : GroupingMode::Off});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box)\n"
-                          "share one radiosity, in groups of about the largest patch area, where\n"
-                          "that at least halves a surface's patches: the unknowns follow the slider\n"
-                          "where the triangles are finer. Unticked, every patch is an unknown.\n"
-                          "Progressive, Jacobi and Gauss-Seidel solve groups; hierarchical does not.");
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+        ImGui::TextUnformatted("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box) share one "
+                               "radiosity, in groups of about the largest patch area, where that at least halves a "
+                               "surface's patches: the unknowns follow the slider where the triangles are finer. "
+                               "Unticked, every patch is an unknown. Progressive, Jacobi and Gauss-Seidel solve groups; "
+                               "hierarchical does not.");
+        if (const std::string& reason = live_.snapshot().groupingReason; !reason.empty())
+            ImGui::TextWrapped("Grouping %s", reason.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
 }
 
 } // namespace radiant::app

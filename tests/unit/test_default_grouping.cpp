@@ -74,6 +74,15 @@ TEST_CASE("the built-in scenes of large quads are never grouped by default: the 
     }
     // The Cornell box keeps its patch count: the accuracy table's and the lab's 2,805.
     CHECK(meshAt(makeCornellBox(), kSolveDefaults.maxPatchArea).size() == 2805);
+    // Its stderr is what it was (the method's line only); the JSON says why nothing was grouped.
+    const test::CommandRun run = test::runRadiant("solve cornell-box --max-patch-area 0.05 --max-iterations 1 --json -");
+    INFO(run.err);
+    REQUIRE(run.status == 0);
+    CHECK_FALSE(contains(run.err, "radiant: grouping:"));
+    const nlohmann::json report = nlohmann::json::parse(run.out);
+    CHECK(report["grouped"] == false);
+    CHECK(report["unknowns"] == report["patches"]);
+    CHECK(contains(report["grouping_reason"].get<std::string>(), "off: no surface is tessellated finer than 0.05 m^2"));
 }
 
 TEST_CASE("radiant solve groups a finely tessellated object by default: unknowns near its area over --max-patch-area") {
