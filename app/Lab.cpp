@@ -77,7 +77,7 @@ struct Lab::State {
           orbit(orbitFromHome(*initialScene, nullptr)),
           panelsVisible(options.showPanels),
           live(solverThread),
-          patchArea(options.maxPatchArea) {
+          patchArea(options.maxPatchArea.value_or(kSolveDefaults.maxPatchArea)) {
         display.uiScale = options.uiScale;
         // Our callbacks first: ImGui's backend installs its own and chains to these.
         glfwSetWindowUserPointer(window.handle(), this);
@@ -103,6 +103,7 @@ struct Lab::State {
         demoRenderer.emplace();
 
         auto scene = std::make_unique<ScenePanel>(live, options.maxPatchArea);
+        const double openingArea = scene->patchAreaFor(*initialScene);
         scenePanel = scene.get();
         auto probe = std::make_unique<ProbePanel>(live);
         probe->followUnits(display);
@@ -140,7 +141,7 @@ struct Lab::State {
         sidebar.add(std::move(lessonList));
         stage.emplace(live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea);
 
-        live.send(command::LoadScene{initialScene, MeshingOptions{options.maxPatchArea}});
+        live.send(command::LoadScene{initialScene, MeshingOptions{openingArea}});
         if (options.runOnStart) live.send(command::Run{});
     }
 
@@ -423,7 +424,7 @@ struct Lab::State {
     HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
     LectureDemosPanel* demosPanel = nullptr;  // owned by the sidebar
     LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
-    double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with
+    double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with (the default, not the opening scene's)
     LessonPlayer lessons;
     std::optional<LabLessonStage> stage;  ///< made once the panels it drives exist
     std::string lessonError;

@@ -1,5 +1,6 @@
 #pragma once
 // The interactive lab: the window, the frame loop and the panels.
+#include <optional>
 #include <string>
 
 #include "radiometry/solver/SolveDefaults.h"
@@ -14,7 +15,9 @@ struct LabOptions {
     bool visible = true;     ///< false: an offscreen window (tests that need no display output)
     bool vsync = true;
     float uiScale = 1.0f;    ///< ImGui text and spacing scale; RADIANT_UI_SCALE overrides it in runLab
-    double maxPatchArea = kSolveDefaults.maxPatchArea;  ///< m^2
+    /// m^2 for every scene opened; none: each scene opens at openingPatchArea's for its size
+    /// (OpeningPatchArea.h: the Cornell box at kSolveDefaults.maxPatchArea).
+    std::optional<double> maxPatchArea;
     bool runOnStart = true;      ///< solve as soon as the form factors are ready; false waits for Run/Step
     std::string lesson;          ///< a lesson file to open on its first step (docs/lessons.md); empty: none
 };

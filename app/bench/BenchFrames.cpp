@@ -445,7 +445,7 @@ BenchTable benchFrames(const BenchOptions& options) {
 
     const std::shared_ptr<const Snapshot> snapshot = lab.snapshot();
     table.notes.push_back(std::to_string(snapshot->mesh ? snapshot->mesh->size() : 0) + " patches (max patch area " +
-                          formatNumber(labOptions.maxPatchArea * 1e4) + " cm^2); GL renderer: " + lab.glInfo().renderer);
+                          formatNumber(labOptions.maxPatchArea.value_or(0) * 1e4) + " cm^2); GL renderer: " + lab.glInfo().renderer);
     table.notes.push_back("Rows below the convergence and idle-CPU rows: " + std::to_string(rounds) + " rounds of " +
                           std::to_string(frames) + " frames idle then " + std::to_string(frames) +
                           " running, drawn back to back by the real lab (Lab::frame: input, snapshot, panels, 3D view, "

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "app/LabApp.h"
@@ -35,29 +36,34 @@ Scene loadSceneArgument(const std::string& nameOrPath) {
     return scene;
 }
 
-MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing) {
-    if (!named.empty()) return {parseMethod(named), ""};
-    MethodChoice choice = chooseDefaultMethod(scene, meshing);
-    std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(choice.method)).c_str(), choice.reason.c_str());
-    return choice;
+void addGroupingFlags(CLI::App& sub, GroupingFlags& flags, const std::string& what) {
+    CLI::Option* on = sub.add_flag("--group-patches", flags.on,
+                                   "Group adjacent patches of every smooth surface into unknowns of about --max-patch-area "
+                                   "(by default only surfaces tessellated finer than it, where that at least halves their "
+                                   "patches); jacobi, gauss-seidel and progressive solve groups, hierarchical and "
+                                   "importance solve the patches" + what);
+    CLI::Option* off = sub.add_flag("--no-group-patches", flags.off, "Solve every patch as its own unknown");
+    on->excludes(off);
 }
 
-CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, bool grouped) {
+CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, GroupingMode grouping) {
     MeshingOptions meshing;
     meshing.maxPatchArea = maxPatchArea;
     CommandSystem system;
-    if (!grouped) system.choice = methodForCommand(namedMethod, scene, meshing);  // said before the meshing
     system.mesh = meshScene(scene, meshing);
-    if (!grouped) return system;
-    system.groups = std::make_shared<const PatchGroups>(groupPatches(system.mesh, GroupingOptions{.maxGroupArea = maxPatchArea}));
-    if (!namedMethod.empty()) {
-        system.choice = {parseMethod(namedMethod), ""};
-        return system;
-    }
-    // The groups are the unknowns: progressive refinement shoots them (DefaultMethod.h).
-    system.choice = chooseDefaultMethodForGroups(system.groups->size(), system.mesh.size());
-    std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(system.choice.method)).c_str(),
-                 system.choice.reason.c_str());
+    std::optional<SolverMethod> named;
+    if (!namedMethod.empty()) named = parseMethod(namedMethod);
+    SystemChoice choice = chooseSystem(system.mesh, maxPatchArea, grouping, named);
+    system.groups = std::move(choice.groups);
+    system.groupingReason = std::move(choice.groupingReason);
+    system.choice = std::move(choice.method);
+    // Said when it changes what is solved or what was asked; the ungrouped default is said in the
+    // JSON only, so a scene of large quads prints what it always printed.
+    if (system.groups || choice.methodTakesNoGroups || grouping == GroupingMode::On)
+        std::fprintf(stderr, "radiant: grouping: %s\n", system.groupingReason.c_str());
+    if (!named)
+        std::fprintf(stderr, "radiant: method: %s (%s)\n", std::string(methodName(system.choice.method)).c_str(),
+                     system.choice.reason.c_str());
     return system;
 }
 
@@ -75,7 +81,7 @@ std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSyste
 
 std::string methodOptionHelp() {
     return methodNameList() + "; default: " + std::string(methodName(kSolveDefaults.method)) + " up to " +
-           std::to_string(kProgressiveMaxPatches) + " patches, hierarchical beyond; with --group-patches progressive over the groups";
+           std::to_string(kProgressiveMaxPatches) + " unknowns (patches, or their groups), hierarchical beyond";
 }
 
 ParsedCommandLine parseCommandLine(int argc, const char* const* argv) {

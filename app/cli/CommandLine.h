@@ -9,6 +9,7 @@
 #include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/solver/DefaultGrouping.h"
 #include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/Solver.h"
 
@@ -39,19 +40,27 @@ struct Subcommand {
 /// printed on stderr, one line each. Throws RadiantError as loadScene does.
 Scene loadSceneArgument(const std::string& nameOrPath);
 
-/// The --method of solve, probe and render: the one named, else the default for the scene's size
-/// (DefaultMethod.h), said on stderr in one line ("radiant: method: hierarchical (12,000 patches:
-/// ...)"). The reason is empty for a named method.
-MethodChoice methodForCommand(const std::string& named, const Scene& scene, const MeshingOptions& meshing);
-/// What solve, probe and render solve: the mesh at --max-patch-area, its patch groups with
-/// --group-patches (GroupedSolver.h), and the method: the one named, else methodForCommand's, or
-/// for groups chooseDefaultMethodForGroups' by their count (said on stderr alike).
+/// --group-patches and --no-group-patches of solve, probe and render (DefaultGrouping.h).
+struct GroupingFlags {
+    bool on = false;
+    bool off = false;
+    [[nodiscard]] GroupingMode mode() const { return on ? GroupingMode::On : off ? GroupingMode::Off : GroupingMode::Auto; }
+};
+/// Adds the two flags; `what` ends the --group-patches help ("; each patch drawn with its group's B").
+void addGroupingFlags(CLI::App& sub, GroupingFlags& flags, const std::string& what = "");
+
+/// What solve, probe and render solve: the mesh at --max-patch-area, its patch groups and the
+/// method, as chooseSystem decides them (DefaultGrouping.h). Where patches are grouped, a named
+/// method declines them, or --group-patches asked, the grouping and its reason are said on stderr
+/// in one line ("radiant: grouping: on: ..."); a defaulted method in another ("radiant: method:
+/// hierarchical (12,000 patches: ...)").
 struct CommandSystem {
     PatchMesh mesh;
-    std::shared_ptr<const PatchGroups> groups;  ///< null without --group-patches
-    MethodChoice choice;
+    std::shared_ptr<const PatchGroups> groups;  ///< null: every patch an unknown
+    std::string groupingReason;
+    MethodChoice choice;  ///< the reason is empty for a named method
 };
-CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, bool grouped);
+CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene, double maxPatchArea, GroupingMode grouping);
 /// The system's solver (grouped or not); a budget refusal that names no file names the scene.
 std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSystem& system, const SolverOptions& options,
                                           Progress* progress = nullptr);

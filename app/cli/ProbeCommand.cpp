@@ -47,7 +47,7 @@ struct ProbeCommandOptions {
     ViewArguments view{"", "", 0, "--look-at"};  // --target names the measured surface
     std::string json = "-";
     bool photometric = false;
-    bool groupPatches = false;
+    GroupingFlags grouping;
 };
 
 /// The named surface, else the first emitting one; none for a scene lit only by punctual lights.
@@ -82,7 +82,7 @@ int runProbe(const ProbeCommandOptions& options) {
 
     const Scene scene = loadSceneArgument(options.scene);
     const std::optional<std::size_t> target = chooseTarget(scene, options.target);
-    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.grouping.mode());
     const MethodChoice& choice = system.choice;
     const SolverMethod method = choice.method;
     const PatchMesh& mesh = system.mesh;
@@ -131,10 +131,13 @@ int runProbe(const ProbeCommandOptions& options) {
     out["scene"] = scene.name;
     out["method"] = std::string(methodName(method));
     out["method_reason"] = choice.reason.empty() ? std::string("given by --method") : choice.reason;
+    out["grouped"] = system.groups != nullptr;
+    out["grouping_reason"] = system.groupingReason;
     out["solution"] = solution;
     out["iterations"] = iterations;
     if (solution == "solved") out["residual"] = residual;
     out["patches"] = mesh.size();
+    out["unknowns"] = system.groups ? system.groups->size() : mesh.size();
     out["point"] = rgbJson(reading.at.point);
     out["normal"] = rgbJson(reading.normal);
     out["surface"] = scene.surfaces[reading.at.surface].name;
@@ -181,9 +184,7 @@ Subcommand addProbeCommand(CLI::App& root) {
     sub->add_option("--link-tolerance", options->linkTolerance, "hierarchical/importance: refine a link while the radiosity error it may leave exceeds this fraction of the emitted power (smaller: more accurate, slower)")->capture_default_str();
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "FILE, or - for standard output")->capture_default_str();
-    sub->add_flag("--group-patches", options->groupPatches,
-                  "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
-                  "(as solve --group-patches); progressive (the default), jacobi or gauss-seidel");
+    addGroupingFlags(*sub, options->grouping);
     sub->add_flag("--photometric", options->photometric,
                   "Also give illuminance_lx and luminance_cd_m2 (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B, Radiance's convention)");
     return {sub, [options] { return runProbe(*options); }};

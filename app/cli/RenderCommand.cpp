@@ -44,7 +44,7 @@ struct RenderOptions {
     bool photometric = false;
     bool flat = false;
     bool wireframe = false;
-    bool groupPatches = false;
+    GroupingFlags grouping;
     float exposureStops = 0.0f;
     std::string camera;  ///< a glTF camera's name or index; empty: the home camera
 };
@@ -102,7 +102,7 @@ int runRender(const RenderOptions& options) {
     LoadedScene loaded = loadScene(options.scene);
     for (const std::string& warning : loaded.scene.warnings) std::fprintf(stderr, "radiant: warning: %s\n", warning.c_str());
     const Scene& scene = loaded.scene;
-    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.grouping.mode());
     const PatchMesh& mesh = system.mesh;
     const SolverMethod method = system.choice.method;
     // One view for the picture and for importance's refinement: what is drawn is what was refined.
@@ -171,9 +171,7 @@ Subcommand addRenderCommand(CLI::App& root) {
     sub->add_flag("--log-scale", options->logScale, "false colour on a log scale (3 decades)");
     sub->add_flag("--photometric", options->photometric,
                   "false colour maps the illuminance each patch receives in lx (179 lm/W, Y = 0.265 R + 0.670 G + 0.065 B)");
-    sub->add_flag("--group-patches", options->groupPatches,
-                  "Solve with adjacent patches of a smooth surface grouped into unknowns of about --max-patch-area "
-                  "(as solve --group-patches); each patch drawn with its group's radiosity");
+    addGroupingFlags(*sub, options->grouping, "; each patch drawn with its group's radiosity");
     sub->add_flag("--flat", options->flat, "each patch its own radiosity (no interpolation)");
     sub->add_flag("--wireframe", options->wireframe, "draw the patch edges");
     sub->add_option("--exposure", options->exposureStops, "exposure in stops relative to the automatic key")

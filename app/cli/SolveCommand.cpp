@@ -38,7 +38,7 @@ struct SolveOptions {
     std::string json;
     std::string csv;
     bool photometric = false;
-    bool groupPatches = false;
+    GroupingFlags grouping;
 };
 
 double secondsSince(std::chrono::steady_clock::time_point start) {
@@ -88,7 +88,7 @@ int runSolve(const SolveOptions& options) {
 
     const auto meshStart = std::chrono::steady_clock::now();
     const Scene scene = loadSceneArgument(options.scene);
-    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.groupPatches);
+    const CommandSystem system = meshForCommand(options.method, scene, options.maxPatchArea, options.grouping.mode());
     const MethodChoice& choice = system.choice;
     const SolverMethod method = choice.method;
     const PatchMesh& mesh = system.mesh;
@@ -149,6 +149,8 @@ int runSolve(const SolveOptions& options) {
         {"method_reason", choice.reason.empty() ? nlohmann::ordered_json("given by --method") : nlohmann::ordered_json(choice.reason)},
         {"patches", mesh.size()},
         {"unknowns", groups ? groups->size() : mesh.size()},
+        {"grouped", groups != nullptr},
+        {"grouping_reason", system.groupingReason},
         {"iterations", stats.iteration},
         {"residual", stats.residual},
         {"seconds", {{"mesh", meshSeconds}, {"form_factors", formFactorSeconds}, {"solve", solveSeconds}}},
@@ -201,10 +203,7 @@ Subcommand addSolveCommand(CLI::App& root) {
     addViewOptions(*sub, options->view);
     sub->add_option("--json", options->json, "Write the per-surface summary as JSON to FILE, or '-' for stdout");
     sub->add_option("--csv", options->csv, "Write one row per patch as CSV to FILE, or '-' for stdout");
-    sub->add_flag("--group-patches", options->groupPatches,
-                  "Group adjacent patches of a smooth surface into unknowns of about --max-patch-area (curved, finely "
-                  "tessellated surfaces); progressive (the default), jacobi or gauss-seidel. The form factors still "
-                  "visit every pair of patches");
+    addGroupingFlags(*sub, options->grouping);
     sub->add_flag("--photometric", options->photometric,
                   "Also give each surface's luminance (cd/m^2), luminous exitance (lm/m^2) and flux (lm): 179 lm/W, "
                   "Y = 0.265 R + 0.670 G + 0.065 B (Radiance's convention)");

@@ -9,6 +9,8 @@
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "radiometry/solver/OpeningPatchArea.h"
+#include "radiometry/solver/SolveDefaults.h"
 
 namespace radiant::app {
 namespace {
@@ -21,9 +23,18 @@ void row(const char* label, const char* format, auto... values) {
 
 } // namespace
 
-ScenePanel::ScenePanel(LiveSolve& live, double maxPatchArea)
-    : live_(live), maxPatchArea_(maxPatchArea), sliderAreaCm2_(static_cast<float>(maxPatchArea * kCm2PerM2)),
-      builtins_(builtinSceneNames()) {}
+ScenePanel::ScenePanel(LiveSolve& live, std::optional<double> maxPatchArea)
+    : live_(live), fixedArea_(maxPatchArea), maxPatchArea_(maxPatchArea.value_or(kSolveDefaults.maxPatchArea)),
+      sliderAreaCm2_(static_cast<float>(maxPatchArea_ * kCm2PerM2)), builtins_(builtinSceneNames()) {}
+
+double ScenePanel::patchAreaFor(const Scene& scene) {
+    if (fixedArea_) return *fixedArea_;
+    OpeningArea opening = openingPatchArea(scene);
+    maxPatchArea_ = opening.maxPatchArea;
+    sliderAreaCm2_ = static_cast<float>(maxPatchArea_ * kCm2PerM2);
+    openingReason_ = std::move(opening.reason);
+    return maxPatchArea_;
+}
 
 void ScenePanel::open(const std::string& nameOrPath) {
     error_.clear();
@@ -38,7 +49,8 @@ void ScenePanel::update() {
         return;
     }
     error_.clear();
-    live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{maxPatchArea_}});
+    const double area = patchAreaFor(*result->scene);
+    live_.send(command::LoadScene{std::move(result->scene), MeshingOptions{area}});
 }
 
 void ScenePanel::draw() {
@@ -52,6 +64,12 @@ void ScenePanel::draw() {
             row("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
         else
             row("Patches", "%s", patches.c_str());
+        // Said where it changes the unknowns; an ungrouped scene says why under the box's tooltip.
+        if (snapshot.groups) {
+            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+            ImGui::TextWrapped("Grouping %s", snapshot.groupingReason.c_str());
+            ImGui::PopStyleColor();
+        }
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
@@ -117,14 +135,29 @@ void ScenePanel::drawMeshing() {
     }
     if (ImGui::IsItemDeactivatedAfterEdit() && std::abs(requested - maxPatchArea_) > 1e-12) {
         maxPatchArea_ = requested;
+        openingReason_.clear();
         live_.sendAndResume(command::Remesh{MeshingOptions{requested}});
     }
-    if (ImGui::Checkbox("Group patches", &groupPatches_)) live_.sendAndResume(command::SetGrouping{groupPatches_});
-    if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box)\n"
-                          "share one radiosity, in groups of about the largest patch area:\n"
-                          "the unknowns follow the slider where the triangles are finer.\n"
-                          "Progressive, Jacobi and Gauss-Seidel solve groups; hierarchical does not.");
+    if (!openingReason_.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        ImGui::TextWrapped("Opened at %s", openingReason_.c_str());
+        ImGui::PopStyleColor();
+    }
+    if (ImGui::Checkbox("Group patches", &groupPatches_))
+        live_.sendAndResume(command::SetGrouping{groupPatches_ ? GroupingMode::Auto : GroupingMode::Off});
+    if (ImGui::IsItemHovered()) {
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 32.0f);
+        ImGui::TextUnformatted("Adjacent patches of a smooth surface (a tessellated sphere, a rounded box) share one "
+                               "radiosity, in groups of about the largest patch area, where that at least halves a "
+                               "surface's patches: the unknowns follow the slider where the triangles are finer. "
+                               "Unticked, every patch is an unknown. Progressive, Jacobi and Gauss-Seidel solve groups; "
+                               "hierarchical does not.");
+        if (const std::string& reason = live_.snapshot().groupingReason; !reason.empty())
+            ImGui::TextWrapped("Grouping %s", reason.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+    }
 }
 
 } // namespace radiant::app

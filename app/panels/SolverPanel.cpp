@@ -51,6 +51,13 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
         ImGui::TextWrapped("Default for this mesh: %s", snapshot.methodReason.c_str());
         ImGui::PopStyleColor();
     }
+    if (snapshot.methodTakesNoGroups) {  // a picked hierarchical solves the patches the Scene panel would group
+        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+        const std::string_view reason = snapshot.groupingReason;
+        const std::string_view why = reason.starts_with("off: ") ? reason.substr(5) : reason;
+        ImGui::TextWrapped("Patches not grouped: %.*s", static_cast<int>(why.size()), why.data());
+        ImGui::PopStyleColor();
+    }
 
     const float buttonWidth = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
     if (ImGui::Button(live_.running() ? "Pause" : "Run", {buttonWidth, 0}))

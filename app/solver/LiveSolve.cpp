@@ -15,7 +15,7 @@ void LiveSolve::send(SolverCommand command) {
     } else if (const auto* links = std::get_if<command::SetLinkTolerance>(&command)) {
         sentLinkTolerance_ = links->linkTolerance;
     } else if (const auto* grouping = std::get_if<command::SetGrouping>(&command)) {
-        groupingSent_ = grouping->groupPatches;
+        groupingSent_ = grouping->mode;
     } else if (const auto* method = std::get_if<command::SetMethod>(&command)) {
         sentMethod_ = method->method;
     } else if (std::holds_alternative<command::Run>(command) || std::holds_alternative<command::Pause>(command)) {
@@ -60,7 +60,7 @@ void LiveSolve::compare(bool on) {
     SolverThread& b = *second;
     b.send(command::SetMethod{comparison_.method});
     b.send(command::SetTolerance{sentTolerance_.value_or(a.tolerance)});
-    if (groupingSent_) b.send(command::SetGrouping{true});
+    if (groupingSent_) b.send(command::SetGrouping{*groupingSent_});
     if (const double links = sentLinkTolerance_.value_or(a.linkTolerance); links != SolverOptions{}.linkEpsilon)
         b.send(command::SetLinkTolerance{links});
     // A scene or mesh still queued for A is what B must solve; otherwise A's scene as edited.

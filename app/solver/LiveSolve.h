@@ -67,7 +67,7 @@ private:
     std::optional<MeshingOptions> sentMeshing_;
     std::optional<double> sentTolerance_, sentLinkTolerance_;
     std::optional<SolverMethod> sentMethod_;
-    bool groupingSent_ = false;  ///< the last SetGrouping sent grouped
+    std::optional<GroupingMode> groupingSent_;  ///< the last SetGrouping's, for B
     bool runSent_ = false;  ///< the last of Run and Pause sent was Run
 };
 

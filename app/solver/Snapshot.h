@@ -57,9 +57,14 @@ struct Snapshot {
     /// started: a materials edit must leave it unchanged.
     std::uint64_t solverBuilds = 0;
     MeshingOptions meshing;                 ///< what `mesh` was made with
-    /// The patch groups solved as the unknowns (command::SetGrouping), made from `mesh`; null when
-    /// the lab does not group.
+    /// The patch groups solved as the unknowns (command::SetGrouping, DefaultGrouping.h), made from
+    /// `mesh`; null when every patch is its own.
     std::shared_ptr<const PatchGroups> groups;
+    /// Why grouped or not ("on: 810 patches in 312 groups (...)"), for the Scene panel.
+    std::string groupingReason;
+    /// The picked method takes no groups, so the patches are solved (groupingReason says so; the
+    /// Solver panel shows it as a note).
+    bool methodTakesNoGroups = false;
     /// Hierarchical and importance methods: every link as a segment between the centroids of the
     /// two elements it joins (pairs of ends, m). Shared by successive snapshots while the links
     /// stay the same (refinement is what changes them); null for the other methods.

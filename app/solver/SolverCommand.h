@@ -12,6 +12,7 @@
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/scene/View.h"
+#include "radiometry/solver/DefaultGrouping.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app::command {
@@ -45,11 +46,13 @@ struct SetLinkTolerance {
 struct Remesh {
     MeshingOptions meshing;
 };
-/// Groups adjacent patches of a smooth surface into unknowns of about the meshing's largest patch
-/// area (PatchGroups.h), on this mesh and every later one, or stops grouping; rebuilds the solver.
-/// Hierarchical and importance radiosity take no groups (the solver's error says so).
+/// How this mesh and every later one groups adjacent patches of a smooth surface into unknowns of
+/// about the meshing's largest patch area (DefaultGrouping.h: Auto, the default, where that at least
+/// halves a surface's patches; Off, the Scene panel's box unticked); rebuilds the solver.
+/// Hierarchical and importance radiosity take no groups: picked, they solve the patches, and the
+/// snapshot's grouping reason says so.
 struct SetGrouping {
-    bool groupPatches = false;
+    GroupingMode mode = GroupingMode::Auto;
 };
 /// A point on the scene (the probe's pick) whose hierarchical links the snapshots single out: the
 /// links of the element under it and of every ancestor, all of which it gathers through push-pull.

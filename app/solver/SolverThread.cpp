@@ -13,6 +13,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchGroups.h"
+#include "radiometry/solver/DefaultGrouping.h"
 #include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/GroupedSolver.h"
@@ -41,9 +42,12 @@ struct SolverThread::State {
     std::shared_ptr<const RayCaster> rays;
     MeshingOptions meshing;
     std::shared_ptr<const PatchMesh> mesh;
-    /// command::SetGrouping: `mesh`'s patches grouped into the unknowns (null when not grouping).
-    bool groupPatches = false;
+    /// command::SetGrouping, and what chooseSystem made of it for `mesh` and `method`: the patch
+    /// groups solved as the unknowns (null: the patches), why, and whether a picked method took none.
+    GroupingMode grouping = GroupingMode::Auto;
     std::shared_ptr<const PatchGroups> groups;
+    std::string groupingReason;
+    bool methodTakesNoGroups = false;
     std::unique_ptr<Solver> solver;
     /// The scene and mesh the solver was built from, kept alive as long as it is: a solver may hold
     /// references to them, while materials edits replace `scene`.
@@ -128,18 +132,6 @@ std::pair<std::shared_ptr<const std::vector<glm::vec3>>, std::size_t> focusLinkS
     }
     return {std::move(segments),
             static_cast<std::size_t>(std::count(linkedAtDepth.begin(), linkedAtDepth.end(), true))};
-}
-
-/// The mesh's patch groups when the lab groups, at the meshing's largest patch area (as the command
-/// line's --group-patches at --max-patch-area).
-std::shared_ptr<const PatchGroups> groupsFor(bool grouping, const PatchMesh& mesh, const MeshingOptions& meshing) {
-    if (!grouping) return nullptr;
-    return std::make_shared<const PatchGroups>(groupPatches(mesh, GroupingOptions{.maxGroupArea = meshing.maxPatchArea}));
-}
-
-/// The default method for the mesh, or for its groups: the unknowns are what cost (DefaultMethod.h).
-MethodChoice defaultMethodFor(const PatchMesh& mesh, const PatchGroups* groups) {
-    return groups ? chooseDefaultMethodForGroups(groups->size(), mesh.size()) : chooseDefaultMethod(mesh.size());
 }
 
 /// Index of the first patch whose radiosity is NaN or infinite, or npos.
@@ -293,12 +285,23 @@ void SolverThread::requeueMeshingUnlessSuperseded(const MeshingOptions& meshing)
     queue_.push_front(command::Remesh{meshing});
 }
 
-void SolverThread::startNewSystem(State& state) {
+/// The unknowns and, unless the user picked one, the method for the current mesh, as `radiant solve`
+/// chooses them at --max-patch-area (DefaultGrouping.h).
+void SolverThread::chooseUnknowns(State& state) {
+    std::optional<SolverMethod> picked;
+    if (state.methodPicked) picked = state.method;
+    SystemChoice choice = chooseSystem(*state.mesh, state.meshing.maxPatchArea, state.grouping, picked);
+    state.groups = std::move(choice.groups);
+    state.groupingReason = std::move(choice.groupingReason);
+    state.methodTakesNoGroups = choice.methodTakesNoGroups;
     if (!state.methodPicked) {
-        MethodChoice choice = defaultMethodFor(*state.mesh, state.groups.get());
-        state.method = choice.method;
-        state.methodReason = std::move(choice.reason);
+        state.method = choice.method.method;
+        state.methodReason = std::move(choice.method.reason);
     }
+}
+
+void SolverThread::startNewSystem(State& state) {
+    chooseUnknowns(state);
     state.solver.reset();
     state.running = false;
     state.pendingSteps = 0;
@@ -348,15 +351,17 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.methodReason.clear();
                 if (c.method != state.method || !state.solver) {
                     state.method = c.method;
+                    // Hierarchical takes no groups (it solves the patches); a picked method may
+                    // group where the default would not (beyond kProgressiveMaxPatches groups).
+                    if (state.mesh) chooseUnknowns(state);
                     state.solver.reset();
                     state.history.restart(c.method);  // the other methods' runs stay, to compare
                     ensureSolver(state);
                 }
             } else if constexpr (std::is_same_v<C, command::SetGrouping>) {
-                if (c.groupPatches == state.groupPatches) return;
-                state.groupPatches = c.groupPatches;
+                if (c.mode == state.grouping) return;
+                state.grouping = c.mode;
                 if (!state.mesh) return;  // the next mesh is grouped
-                state.groups = groupsFor(state.groupPatches, *state.mesh, state.meshing);
                 startNewSystem(state);
             } else if constexpr (std::is_same_v<C, command::SetMaterial>) {
                 if (!state.scene || c.surface >= state.scene->surfaces.size())
@@ -425,7 +430,6 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.rays = std::move(rays);
                 state.mesh = std::move(mesh);
                 state.meshing = c.meshing;
-                state.groups = groupsFor(state.groupPatches, *state.mesh, state.meshing);
                 ++state.meshGeneration;
                 // A method picked for another scene stays unless its matrix cannot hold this one:
                 // opening a scene never ends in a refusal (re-meshing finer may, naming the slider).
@@ -528,6 +532,8 @@ void SolverThread::publish(State& state) {
     s->solverBuilds = state.solverBuilds;
     s->meshing = state.meshing;
     s->groups = state.groups;
+    s->groupingReason = state.groupingReason;
+    s->methodTakesNoGroups = state.methodTakesNoGroups;
     publishOverlays(state, *s);
     generationPublished_.store(s->generation, std::memory_order_relaxed);
     std::shared_ptr<const Snapshot> next(std::move(s));

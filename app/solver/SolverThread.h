@@ -57,6 +57,9 @@ private:
     /// After a new mesh or grouping: the default method unless the user picked one, a fresh solver
     /// and history, published at once.
     void startNewSystem(State& state);
+    /// The current mesh's unknowns (its patch groups or its patches) and, unless the user picked
+    /// one, the method, as `radiant solve` chooses them at --max-patch-area (DefaultGrouping.h).
+    static void chooseUnknowns(State& state);
     void publish(State& state);
     /// Adds what the display's overlays need (links, importance) to a snapshot being published.
     static void publishOverlays(State& state, Snapshot& s);

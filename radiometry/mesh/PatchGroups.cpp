@@ -53,6 +53,9 @@ PatchGroups groupPatches(const PatchMesh& mesh, const GroupingOptions& options) 
     checkPositive(options.maxGroupArea, "the maximum group area");
     checkPositive(options.creaseDegrees, "the crease angle");
     checkPositive(options.spreadDegrees, "the normal spread");
+    if (!(options.keepAtMostFraction > 0 && options.keepAtMostFraction <= 1))
+        throw RadiantError({"", "patch grouping"}, "the fraction of groups kept must be in (0, 1], got " +
+                                                     std::to_string(options.keepAtMostFraction));
     const double degree = std::numbers::pi / 180;
     const double cosCrease = std::cos(options.creaseDegrees * degree), cosSpread = std::cos(options.spreadDegrees * degree);
     // The mesher's patches are at most the requested area up to a relative 4e-6 (MeshingOptions).
@@ -67,9 +70,32 @@ PatchGroups groupPatches(const PatchMesh& mesh, const GroupingOptions& options) 
         double area = 0;
         glm::dvec3 normalSum{0.0};  // area-weighted
     };
+    const auto keepPatches = [&](std::uint32_t first, std::uint32_t last) {
+        for (std::uint32_t p = first; p < last; ++p) {
+            groups.groupOf[p] = static_cast<std::uint32_t>(groups.size());
+            groups.members.push_back(p);
+            groups.firstMember.push_back(static_cast<std::uint32_t>(groups.members.size()));
+            groups.area.push_back(mesh.patches[p].area);
+        }
+    };
     for (std::size_t s = 0; s < surfaces; ++s) {
         groups.surfaceFirstGroup.push_back(static_cast<std::uint32_t>(groups.size()));
         const std::uint32_t first = mesh.surfaceFirstPatch[s], last = mesh.surfaceFirstPatch[s + 1];
+        const double keepAtMost = options.keepAtMostFraction * (last - first);
+        // Only a surface whose faces are smaller than the request: the mesher cuts a large face
+        // to it, into patches that may be small where it cut along another face (the Cornell box's
+        // floor around the blocks), and those stay patches.
+        double surfaceArea = 0;
+        std::uint32_t faces = 0;
+        for (std::uint32_t p = first; p < last; ++p) {
+            surfaceArea += mesh.patches[p].area;
+            faces = std::max(faces, mesh.patches[p].face + 1);
+        }
+        if (faces < options.minimumFaces ||
+            (options.keepAtMostFraction < 1 && surfaceArea > options.keepAtMostFraction * areaLimit * faces)) {
+            keepPatches(first, last);
+            continue;
+        }
         const auto neighbours = smoothNeighbours(mesh, first, last, cosCrease);
         std::vector<std::uint32_t> groupOf(last - first, kNone);  // local patch -> local group
         std::vector<Grown> grown;
@@ -161,6 +187,12 @@ PatchGroups groupPatches(const PatchMesh& mesh, const GroupingOptions& options) 
             }
         }
 
+        std::size_t kept = 0;
+        for (std::uint32_t g = 0; g < grown.size(); ++g) kept += find(g) == g;
+        if (static_cast<double>(kept) > keepAtMost) {
+            keepPatches(first, last);
+            continue;
+        }
         for (std::uint32_t g = 0; g < grown.size(); ++g) {
             if (find(g) != g) continue;
             std::vector<std::uint32_t>& patches = grown[g].patches;

@@ -25,6 +25,14 @@ struct GroupingOptions {
     /// normal when two groups merge: one radiosity stands for surfaces that face about one way (a
     /// sphere is then at least 4 groups; a cube's sides stay apart by the crease).
     double spreadDegrees = 60;
+    /// Below 1, a surface is grouped only where its faces' mean area is at most this fraction of
+    /// maxGroupArea (its triangles, not the request, set its patches) and its groups are at most
+    /// this fraction of its patches; others stay one group per patch (as ungroupedPatches). 1 groups
+    /// every smooth surface (--group-patches); the default grouping takes 0.5 (DefaultGrouping.h).
+    double keepAtMostFraction = 1;
+    /// A surface of fewer faces is not grouped (a box's sides, a lamp: shapes of their own, whose
+    /// patches the request sets); 0 groups any.
+    std::uint32_t minimumFaces = 0;
 };
 
 struct PatchGroups {

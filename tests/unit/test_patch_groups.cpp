@@ -295,7 +295,7 @@ TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over t
     CHECK(poweredShot == relativeTo(poweredUngrouped, 0.01));
 }
 
-TEST_CASE("radiant solve --group-patches shoots the groups by default, reports them as the unknowns, and hierarchical refuses them") {
+TEST_CASE("radiant solve --group-patches shoots the groups by default, reports them as the unknowns, and hierarchical solves the patches") {
     const std::string file = "'" + std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf'";
     const test::CommandRun run = test::runRadiant("solve " + file + " --group-patches --max-patch-area 1 --json -");
     INFO(run.err);
@@ -310,17 +310,20 @@ TEST_CASE("radiant solve --group-patches shoots the groups by default, reports t
     CHECK(sphere["patches"] == 512);
     CHECK(sphere["unknowns"].get<std::size_t>() <= 8);  // 3.1 m^2 at 1 m^2, the spread needs 4
 
-    const test::CommandRun refused =
-        test::runRadiant("solve " + file + " --group-patches --method hierarchical --max-patch-area 1");
-    CHECK(refused.status == 2);
-    CHECK(refused.err.find("jacobi, gauss-seidel or progressive only, not hierarchical") != std::string::npos);
+    // Hierarchical takes no groups: it solves the patches and says so (test_default_grouping.cpp).
+    const test::CommandRun hierarchical =
+        test::runRadiant("solve " + file + " --group-patches --method hierarchical --max-patch-area 1 --max-iterations 1");
+    CHECK(hierarchical.status == 0);
+    CHECK(hierarchical.err.find("radiant: grouping: off: hierarchical refines its own elements and takes no groups") !=
+          std::string::npos);
 }
 
-TEST_CASE("with --group-patches the default method counts the groups, not the patches") {
+TEST_CASE("grouped, the default method counts the groups, not the patches") {
     // The rounded cube's room at 1 m^2: 3,103 patches, above progressive refinement's 3,000, so
     // hierarchical ungrouped; 75 groups, so progressive refinement grouped. Only the choice is run.
     const std::string file = "'" + std::string(RADIANT_TEST_DATA_DIR) + "/grouping/rounded_cube_room.gltf'";
-    const test::CommandRun plain = test::runRadiant("solve " + file + " --max-patch-area 1 --max-iterations 1 --json -");
+    const test::CommandRun plain =
+        test::runRadiant("solve " + file + " --no-group-patches --max-patch-area 1 --max-iterations 1 --json -");
     const test::CommandRun grouped =
         test::runRadiant("solve " + file + " --group-patches --max-patch-area 1 --max-iterations 1 --json -");
     INFO(plain.err);

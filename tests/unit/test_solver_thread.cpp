@@ -248,7 +248,7 @@ TEST_CASE("the lab's patch groups: each mesh grouped at its area, the default ch
         loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/sphere_room.gltf").scene);
     SolverThread thread;
     thread.send(command::LoadScene{scene, MeshingOptions{1.0}});
-    thread.send(command::SetGrouping{true});
+    thread.send(command::SetGrouping{GroupingMode::On});
     thread.send(command::Run{});
     thread.waitUntilIdle();
     auto snapshot = thread.snapshot();
@@ -274,18 +274,21 @@ TEST_CASE("the lab's patch groups: each mesh grouped at its area, the default ch
     CHECK(snapshot->groups->groupOf.size() == snapshot->mesh->size());
     CHECK(snapshot->groups->size() == 312);
 
-    thread.send(command::SetGrouping{false});
+    thread.send(command::SetGrouping{GroupingMode::Off});
     thread.waitUntilIdle();
     snapshot = thread.snapshot();
     CHECK_FALSE(snapshot->groups);
     CHECK(snapshot->methodReason.find("810 patches: progressive refinement") != std::string::npos);
 
-    // A picked method that takes no groups says so.
+    // A picked method that takes no groups solves the patches and says so.
     thread.send(command::SetMethod{SolverMethod::Hierarchical});
-    thread.send(command::SetGrouping{true});
+    thread.send(command::SetGrouping{GroupingMode::On});
     thread.waitUntilIdle();
     snapshot = thread.snapshot();
-    CHECK(snapshot->error.find("jacobi, gauss-seidel or progressive only, not hierarchical") != std::string::npos);
+    CHECK(snapshot->error.empty());
+    CHECK_FALSE(snapshot->groups);
+    CHECK(snapshot->methodTakesNoGroups);
+    CHECK(snapshot->groupingReason.find("hierarchical refines its own elements and takes no groups") != std::string::npos);
 }
 
 TEST_CASE("hierarchical solvers publish their links as segments between the elements they join, others none") {
