@@ -1,6 +1,5 @@
 #include "app/panels/PathTracedReading.h"
 
-#include <algorithm>
 #include <exception>
 #include <utility>
 
@@ -29,16 +28,19 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
             const ReferencePoint at = locateReferencePoint(*scene, point, normal);
             const PathTracer tracer(*scene, *rays);
             ReferenceRunOptions options;
-            // A round is 512 paths per core, a few milliseconds: a new pick (which joins this
-            // worker on the window's thread) never waits long.
+            // A batch is 512 paths, a few milliseconds: a new pick (which joins this worker on the
+            // window's thread) never waits long.
             options.samplesPerBatch = 512;
-            const unsigned threads = std::max(1u, std::thread::hardware_concurrency());
-            options.threads = threads;
+            // One thread, this one: the reference never holds more than one core, so llvmpipe's
+            // rasterisers (one per core) always find a core it does not contend for. With one per
+            // core it cost the probe rows of `radiant bench --only frames` about a quarter of their
+            // frame time while it refined (README, "Benchmarks").
+            options.threads = 1;
             ReferenceRun run(tracer, at, options);
             for (;;) {
-                run.addBatches(threads);
+                run.addBatches(1);
                 const ReferenceEstimate estimate = run.estimate();
-                const bool done = estimate.samples >= 4096 && estimate.relativeStandardError() <= kTargetRelativeError;
+                const bool done = converged(estimate);
                 publish([&](State& state) {
                     state.estimate = estimate;
                     state.refining = !done;
@@ -68,6 +70,10 @@ void PathTracedReading::stop() {
     }
     shared_.reset();
     scene_.reset();
+}
+
+bool PathTracedReading::converged(const ReferenceEstimate& estimate) {
+    return estimate.samples >= kMinimumSamples && estimate.relativeStandardError() <= kTargetRelativeError;
 }
 
 PathTracedReading::State PathTracedReading::state() const {

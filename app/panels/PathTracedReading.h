@@ -1,6 +1,6 @@
 #pragma once
 // The Probe panel's independent reference: the rendering equation path-traced at the picked point
-// (radiometry/reference/) on a background thread at the solver's low priority, refined batch by
+// (radiometry/reference/) on one background thread at the solver's low priority, refined batch by
 // batch until its standard error is small, each refinement published for the panel to show beside
 // the solver's value. The panel reads copies; the worker owns the run.
 #include <cstdint>
@@ -44,8 +44,12 @@ public:
     /// The scene the running estimate uses (its materials), or null.
     [[nodiscard]] const Scene* scene() const { return scene_.get(); }
 
-    /// Refinement stops when the standard error of E is below this fraction in every band.
+    /// Refinement stops when the standard error of E is below this fraction in every band (the
+    /// panel's differences show tenths of a percent), after at least kMinimumSamples paths.
     static constexpr double kTargetRelativeError = 1e-3;
+    static constexpr std::uint64_t kMinimumSamples = 4096;
+    /// The stopping rule: the estimate is as precise as the target asks.
+    [[nodiscard]] static bool converged(const ReferenceEstimate& estimate);
 
 private:
     struct Shared {

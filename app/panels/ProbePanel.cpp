@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <string>
 
@@ -117,8 +118,13 @@ void ProbePanel::update() {
     const auto now = std::chrono::steady_clock::now();
     const bool stale =
         dirty_ || snapshot.generation != readingGeneration_ || secondGeneration() != secondReadingGeneration_;
-    // A new pick is answered at once; a converging solve at most every kRefreshInterval.
-    if (stale && (dirty_ || now - lastStart_ >= kRefreshInterval)) startMeasuring(now);
+    // A new pick is answered at once; a converging solve at most every refreshInterval().
+    if (stale && (dirty_ || now - lastStart_ >= refreshInterval(measureSeconds_))) startMeasuring(now);
+}
+
+std::chrono::duration<double> ProbePanel::refreshInterval(double lastMeasureSeconds) {
+    return std::max<std::chrono::duration<double>>(kRefreshInterval,
+                                                   std::chrono::duration<double>(kMeasureShare * lastMeasureSeconds));
 }
 
 bool ProbePanel::busy() const {
@@ -356,8 +362,23 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
     ImGui::TextDisabled("solver vs path-traced:");
     differenceRow("B", reading.radiosity.value(), e.radiosity.value());
     differenceRow("E", reading.irradiance.value(), e.irradiance.value());
-    ImGui::TextDisabled("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
-                        static_cast<double>(e.samples), state.refining ? ", refining" : "");
+    // The stopping rule in the line itself: refining shows what it refines to, a stopped run that
+    // it met it (a run that stops short of it, stopped by a new pick, shows neither).
+    const double target = 100 * PathTracedReading::kTargetRelativeError;
+    char status[64] = "";
+    if (state.refining)
+        std::snprintf(status, sizeof status, ", refining to \xC2\xB1%.2f%%", target);
+    else if (PathTracedReading::converged(e))
+        std::snprintf(status, sizeof status, ", converged (target \xC2\xB1%.2f%%)", target);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    ImGui::TextWrapped("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
+                       static_cast<double>(e.samples), status);  // wrapped: the status may not fit beside it
+    ImGui::PopStyleColor();
+    if (ImGui::IsItemHovered())
+        ImGui::SetTooltip("The path tracer stops once the standard error of E is under %.2f%% in every band: the\n"
+                          "differences above show tenths of a percent. It traces on one background thread at the\n"
+                          "solver's low priority, so it never takes more than one core from the 3D view.",
+                          target);
 }
 
 void ProbePanel::drawTarget(const Scene& scene) {

@@ -58,8 +58,15 @@ public:
     /// The `radiant probe ...` line that repeats this reading (ProbeCommandLine.h); empty with no pick.
     [[nodiscard]] std::string commandLine() const;
 
-    /// Readings are refreshed at most this often while the solve runs.
+    /// Readings are refreshed at most this often while the solve runs,
     static constexpr std::chrono::milliseconds kRefreshInterval{250};
+    /// and at most once in this many times the last measurement's wall time: on a fine mesh a
+    /// gather (two in comparison mode) takes tens of milliseconds, and four a second kept about a
+    /// tenth of a core from the 3D view's rasterisers while the solve ran (`radiant bench --only
+    /// frames`). Measured in wall time, it backs off further when the machine is busy.
+    static constexpr double kMeasureShare = 8.0;
+    /// The wait between refreshes after a measurement that took `lastMeasureSeconds`.
+    [[nodiscard]] static std::chrono::duration<double> refreshInterval(double lastMeasureSeconds);
 
 private:
     /// What the worker hands back: a reading, or why there is none.

@@ -6,6 +6,7 @@
 #include <doctest/doctest.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -20,6 +21,7 @@
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
+#include "app/panels/ProbePanel.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -277,6 +279,18 @@ TEST_CASE("radiant probe on the built-in parallel plates prints the closed forms
     // A bad vector exits 2 with one line naming the option.
     CHECK(std::system((std::string(RADIANT_BINARY) + " probe parallel-plates --point 0.5,1 --normal 0,-1,0 2>/dev/null")
                           .c_str()) != 0);
+}
+
+TEST_CASE("the Probe panel refreshes its readings at most four times a second, and backs off from slow gathers") {
+    using app::ProbePanel;
+    const auto ms = [](double seconds) {
+        return std::chrono::duration<double, std::milli>(ProbePanel::refreshInterval(seconds)).count();
+    };
+    CHECK(ms(0.0) == doctest::Approx(250));
+    CHECK(ms(0.01) == doctest::Approx(250));  // the lab's default mesh: a gather of a few milliseconds
+    // A gather of 100 ms (a fine mesh, or two in comparison mode) waits 8 times as long: the
+    // readings take at most an eighth of a background core.
+    CHECK(ms(0.1) == doctest::Approx(800));
 }
 
 } // TEST_SUITE

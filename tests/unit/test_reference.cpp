@@ -387,9 +387,16 @@ TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and 
     CHECK_FALSE(done.refining);
     CHECK(done.error.empty());
     CHECK(done.estimate->relativeStandardError() <= app::PathTracedReading::kTargetRelativeError);
+    CHECK(app::PathTracedReading::converged(*done.estimate));
     const double F = 4 * pointToCornerRectangle(0.5, 0.5, 1.0);  // the built-in emitter's exitance is 1 W/m^2
     for (int band = 0; band < 3; ++band)
         checkWithin(done.estimate->irradiance.value()[band], done.estimate->irradianceStandardError[band], F, 4, 0.001);
+    // Converged, it has stopped: no more paths arrive (its thread no longer competes with the view's).
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const app::PathTracedReading::State later = reading.state();
+    REQUIRE(later.estimate);
+    CHECK(later.estimate->samples == done.estimate->samples);
+    CHECK_FALSE(later.refining);
 
     // A restart forgets the old estimate; stopping at once joins the worker and leaves nothing behind.
     reading.start(scene, rays, {0.25, 1, 0.75}, {0, -1, 0});
@@ -402,6 +409,23 @@ TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and 
     const app::PathTracedReading::State refused = waitUntilDone(reading);
     CHECK_FALSE(refused.estimate);
     CHECK(refused.error.find("degrees from the front of surface 'receiver'") != std::string::npos);
+}
+
+TEST_CASE("the Probe panel path tracer's stopping rule: the target standard error, after a minimum of paths") {
+    ReferenceEstimate e;
+    e.irradiance = IrradianceRgb(Rgb(2.0, 1.0, 0.5));
+    const auto withError = [&](double relative, std::uint64_t samples) {
+        e.irradianceStandardError = Rgb(2.0, 1.0, 0.5) * relative;
+        e.samples = samples;
+        return app::PathTracedReading::converged(e);
+    };
+    const double target = app::PathTracedReading::kTargetRelativeError;
+    const std::uint64_t enough = app::PathTracedReading::kMinimumSamples;
+    CHECK(withError(0.5 * target, enough));
+    CHECK_FALSE(withError(2 * target, 100 * enough));  // every band must be under the target
+    CHECK_FALSE(withError(0.5 * target, enough - 1));   // a lucky early estimate is not trusted
+    e.samples = 0;
+    CHECK_FALSE(app::PathTracedReading::converged(e));  // no paths: an infinite error
 }
 
 TEST_CASE("radiant reference on the built-in parallel plates prints E = M F with its standard error, and bad input exits 2") {
