@@ -224,7 +224,7 @@ TEST_CASE("a new mesh or grouping from the Scene panel solves on when the solve 
     CHECK(live.snapshot().stats.residual < 1e-3);
     CHECK(live.snapshot().radiosity.front().x == doctest::Approx(2.0).epsilon(2e-3).scale(0));
 
-    live.sendAndResume(command::SetGrouping{true});
+    live.sendAndResume(command::SetGrouping{GroupingMode::On});
     thread.waitUntilIdle();
     live.refresh();
     CHECK(live.snapshot().stats.iteration > 0);
