@@ -14,6 +14,7 @@
 #include "app/ui/ComparisonColours.h"
 #include "app/solver/Comparison.h"
 #include "app/ui/PlotAxes.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -126,7 +127,7 @@ void ConvergencePlot::draw(const Snapshot& snapshot, const Snapshot* second) {
     std::string quantity;
     for (const std::string_view q : quantities) quantity += (quantity.empty() ? "" : " / ") + std::string(q);
     ImGui::Spacing();
-    ImGui::TextWrapped("%s (fraction of emitted power), log scale, against iteration", quantity.c_str());
+    ui::wrappedText("%s (fraction of emitted power), log scale, against iteration", quantity.c_str());
 
     const int maxYTicks = std::max(2, static_cast<int>((height - bottom) / (font * 1.4f)));
     const ui::LogAxis yAxis = ui::logAxisFor(values, maxYTicks, 2);
@@ -212,7 +213,7 @@ void ConvergencePlot::draw(const Snapshot& snapshot, const Snapshot* second) {
             std::snprintf(reached, sizeof reached, "below %.0e at iteration %zu", snapshot.tolerance, *below);
         else
             std::snprintf(reached, sizeof reached, "%.2e after %zu", steps.back().residual, steps.size());
-        ImGui::TextWrapped("%s: %s", segment.label.c_str(), reached);
+        ui::wrappedText("%s: %s", segment.label.c_str(), reached);
     }
     drawExport(snapshot);
 }
@@ -244,7 +245,7 @@ void ConvergencePlot::drawExport(const Snapshot& snapshot) {
     }
     if (!exportMessage_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, exportFailed_ ? theme::kErrorRed : theme::kDoneGreen);
-        ImGui::TextWrapped("%s", exportMessage_.c_str());
+        ui::wrappedText("%s", exportMessage_.c_str());
         ImGui::PopStyleColor();
     }
 }

@@ -19,6 +19,7 @@
 #include "radiometry/hemisphere/HemisphericalCoordinates.h"
 #include "render/ColourScale.h"
 #include "render/SceneTriangles.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -53,7 +54,7 @@ void drawDeltaFormFactorScale(double zenithDeltaF, float width) {
     };
     drawHorizontalColourBar({lo, hi, 24, 0.4f, false}, colour, render::makeLegend(zenithDeltaF, false, 1));
     ImGui::Dummy(ImVec2(barWidth + 2 * margin, font * 2.3f));
-    ImGui::TextWrapped("delta F of one hemicube pixel (no unit: cos theta d omega / pi); the zenith pixel's is dA / pi = %.3g",
+    ui::wrappedText("delta F of one hemicube pixel (no unit: cos theta d omega / pi); the zenith pixel's is dA / pi = %.3g",
                        zenithDeltaF);
 }
 
@@ -232,7 +233,7 @@ void HemispherePanel::remeasure() {
 
 void HemispherePanel::draw() {
     if (!session_->ready()) {
-        ImGui::TextWrapped("Click a surface in the 3D view to stand a hemicube on it.");
+        ui::wrappedText("Click a surface in the 3D view to stand a hemicube on it.");
         return;
     }
     if (panelImageStale_) recolourPanelImage();
@@ -287,9 +288,9 @@ void HemispherePanel::draw() {
     ImGui::TextDisabled("hemicube %d x %d x 3: %.1f ms", capture.layout.width(), capture.layout.width(),
                         session_->lastRenderSeconds() * 1e3);
     if (projection_ == HemisphereProjection::Nusselt)
-        ImGui::TextWrapped("Share of the disk a surface covers = its form factor.");
+        ui::wrappedText("Share of the disk a surface covers = its form factor.");
     else if (projection_ == HemisphereProjection::Equisolid)
-        ImGui::TextWrapped("Equal-area: share of the disk = solid angle / 2 pi sr.");
+        ui::wrappedText("Equal-area: share of the disk = solid angle / 2 pi sr.");
 
     if (comparison_) {
         const Comparison& c = *comparison_;
@@ -318,7 +319,7 @@ void HemispherePanel::draw() {
             ImGui::TextDisabled("hemicube F differs by %+.2f %%", 100.0 * (c.hemicubeFormFactor / c.exact.formFactor - 1.0));
     }
     const Rgb e = session_->gathered().irradiance.value();
-    ImGui::TextWrapped("E = sum B_j F_j = (%.4g, %.4g, %.4g) W/m^2", e.x, e.y, e.z);
+    ui::wrappedText("E = sum B_j F_j = (%.4g, %.4g, %.4g) W/m^2", e.x, e.y, e.z);
     ImGui::TextDisabled("sum of delta F = %.5f (sky %.4f, backs %.4f)", session_->gathered().totalFormFactor,
                         session_->gathered().openFormFactor, session_->gathered().backFaceFormFactor);
 }

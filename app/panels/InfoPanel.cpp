@@ -5,6 +5,7 @@
 #include "app/ui/FrameStats.h"
 #include "app/ui/Shortcuts.h"
 #include "app/ui/SidebarLayout.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -35,13 +36,13 @@ void InfoPanel::draw() {
     row("Context", "OpenGL %d.%d core", gl_.major, gl_.minor);
     if (!fallbackNote_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
-        ImGui::TextWrapped("%s", fallbackNote_.c_str());
+        ui::wrappedText("%s", fallbackNote_.c_str());
         ImGui::PopStyleColor();
     }
     ImGui::TextDisabled("Renderer");
-    ImGui::TextWrapped("%s", gl_.renderer.c_str());
+    ui::wrappedText("%s", gl_.renderer.c_str());
     ImGui::TextDisabled("Version");
-    ImGui::TextWrapped("%s", gl_.version.c_str());
+    ui::wrappedText("%s", gl_.version.c_str());
 
     ImGui::Spacing();
     ImGui::TextDisabled("Controls");

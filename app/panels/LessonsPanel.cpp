@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/ui/Colours.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 
@@ -72,14 +73,14 @@ void LessonsPanel::draw() {
     if ((ImGui::Button("Open") || entered) && path_[0] != '\0') error_ = open_(path_.data());
     if (!error_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ImGui::TextWrapped("%s", error_.c_str());
+        ui::wrappedText("%s", error_.c_str());
         ImGui::PopStyleColor();
     }
 }
 
 void LessonsPanel::drawLesson() {
     const lesson::Lesson& lesson = player_.lesson();
-    ImGui::TextWrapped("%s", lesson.title.c_str());
+    ui::wrappedText("%s", lesson.title.c_str());
     ImGui::TextDisabled("step %zu of %zu%s", player_.step() + 1, player_.stepCount(),
                         player_.settled() ? "" : " (setting up)");
     ImGui::BeginDisabled(player_.step() == 0);

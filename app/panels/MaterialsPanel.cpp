@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "app/ui/Colours.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -169,7 +170,7 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     if (committed && refusal_.empty()) editing_ = false;
     if (!refusal_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        ImGui::TextWrapped("%s", refusal_.c_str());
+        ui::wrappedText("%s", refusal_.c_str());
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("Revert")) {
             editing_ = false;

@@ -16,6 +16,7 @@
 #include "app/ui/SidebarLayout.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/units/Photometry.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 
@@ -190,7 +191,7 @@ void ProbePanel::draw() {
     }
     const Scene& scene = *snapshot.scene;
     if (!pick_) {
-        ImGui::TextWrapped("Click a surface in the 3D view to place a detector there.");
+        ui::wrappedText("Click a surface in the 3D view to place a detector there.");
     } else if (reading_) {
         drawReadings(scene, *reading_);
     } else if (error_.empty()) {
@@ -198,7 +199,7 @@ void ProbePanel::draw() {
     }
     if (!error_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ImGui::TextWrapped("%s", error_.c_str());
+        ui::wrappedText("%s", error_.c_str());
         ImGui::PopStyleColor();
     }
     drawTarget(scene);
@@ -217,7 +218,7 @@ void ProbePanel::draw() {
         // Hierarchical radiosity: the point's irradiance is what its element and each ancestor
         // gathered over their own links, pushed down.
         ImGui::Spacing();
-        ImGui::TextWrapped("Gathers over %zu links on %zu levels of the element tree (Display: Links shows them)",
+        ui::wrappedText("Gathers over %zu links on %zu levels of the element tree (Display: Links shows them)",
                            snapshot.focusLinkSegments->size() / 2, snapshot.focusLevels);
     }
 }
@@ -319,10 +320,10 @@ void ProbePanel::drawCopyCommand() {
     if (ImGui::IsItemHovered()) {
         ImGui::SetNextWindowSize({ImGui::GetFontSize() * 30.0f, 0});
         ImGui::BeginTooltip();
-        ImGui::TextWrapped("Puts this reading's `radiant probe` line on the clipboard (exact point, method, mesh, "
+        ui::wrappedText("Puts this reading's `radiant probe` line on the clipboard (exact point, method, mesh, "
                            "tolerance):\n%s", commandLine().c_str());
         if (methodInfo(live_.snapshot().method).traits.viewDependent)
-            ImGui::TextWrapped("Importance: the command line refines for the scene's home view, not this camera.");
+            ui::wrappedText("Importance: the command line refines for the scene's home view, not this camera.");
         ImGui::EndTooltip();
     }
     if (copied_) {
@@ -342,7 +343,7 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
                           "mesh and convergence you chose. +- is one standard error of the path tracer's estimate.");
     if (!state.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ImGui::TextWrapped("%s", state.error.c_str());
+        ui::wrappedText("%s", state.error.c_str());
         ImGui::PopStyleColor();
         return;
     }
@@ -371,7 +372,7 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
     else if (PathTracedReading::converged(e))
         std::snprintf(status, sizeof status, ", converged (target \xC2\xB1%.2f%%)", target);
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
+    ui::wrappedText("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
                        static_cast<double>(e.samples), status);  // wrapped: the status may not fit beside it
     ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())

@@ -11,6 +11,7 @@
 #include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/solver/OpeningPatchArea.h"
 #include "radiometry/solver/SolveDefaults.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -67,14 +68,14 @@ void ScenePanel::draw() {
         // Said where it changes the unknowns; an ungrouped scene says why under the box's tooltip.
         if (snapshot.groups) {
             ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ImGui::TextWrapped("Grouping %s", snapshot.groupingReason.c_str());
+            ui::wrappedText("Grouping %s", snapshot.groupingReason.c_str());
             ImGui::PopStyleColor();
         }
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
-            ImGui::TextWrapped("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
+            ui::wrappedText("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
         if (const std::size_t lights = scene.lights.size(); lights > 0) {
-            ImGui::TextWrapped("%zu glTF light%s (point, spot, sun): direct light a source on every patch", lights,
+            ui::wrappedText("%zu glTF light%s (point, spot, sun): direct light a source on every patch", lights,
                                lights == 1 ? "" : "s");
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("KHR_lights_punctual, read from candela (lux for a sun) at 179 lm/W.\n"
@@ -109,13 +110,13 @@ void ScenePanel::draw() {
     for (const std::string* message : {static_cast<const std::string*>(&error_), &snapshot.error})
         if (!message->empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-            ImGui::TextWrapped("%s", message->c_str());
+            ui::wrappedText("%s", message->c_str());
             ImGui::PopStyleColor();
         }
     // The loader's warnings travel with the scene, so they show however it was opened.
     if (snapshot.scene && !snapshot.scene->warnings.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        for (const std::string& warning : snapshot.scene->warnings) ImGui::TextWrapped("%s", warning.c_str());
+        for (const std::string& warning : snapshot.scene->warnings) ui::wrappedText("%s", warning.c_str());
         ImGui::PopStyleColor();
     }
 }
@@ -140,7 +141,7 @@ void ScenePanel::drawMeshing() {
     }
     if (!openingReason_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("Opened at %s", openingReason_.c_str());
+        ui::wrappedText("Opened at %s", openingReason_.c_str());
         ImGui::PopStyleColor();
     }
     if (ImGui::Checkbox("Group patches", &groupPatches_))
@@ -154,7 +155,7 @@ void ScenePanel::drawMeshing() {
                                "Unticked, every patch is an unknown. Progressive, Jacobi and Gauss-Seidel solve groups; "
                                "hierarchical does not.");
         if (const std::string& reason = live_.snapshot().groupingReason; !reason.empty())
-            ImGui::TextWrapped("Grouping %s", reason.c_str());
+            ui::wrappedText("Grouping %s", reason.c_str());
         ImGui::PopTextWrapPos();
         ImGui::EndTooltip();
     }

@@ -10,6 +10,7 @@
 #include "app/solver/MethodLabel.h"
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -48,14 +49,14 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
     }
     if (!snapshot.methodReason.empty()) {  // chosen by the scene's size until the user picks one
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ImGui::TextWrapped("Default for this mesh: %s", snapshot.methodReason.c_str());
+        ui::wrappedText("Default for this mesh: %s", snapshot.methodReason.c_str());
         ImGui::PopStyleColor();
     }
     if (snapshot.methodTakesNoGroups) {  // a picked hierarchical solves the patches the Scene panel would group
         ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         const std::string_view reason = snapshot.groupingReason;
         const std::string_view why = reason.starts_with("off: ") ? reason.substr(5) : reason;
-        ImGui::TextWrapped("Patches not grouped: %.*s", static_cast<int>(why.size()), why.data());
+        ui::wrappedText("Patches not grouped: %.*s", static_cast<int>(why.size()), why.data());
         ImGui::PopStyleColor();
     }
 
@@ -178,7 +179,7 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     row("Step time", "%.3f ms", stats.seconds * 1e3);
     if (!snapshot.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ImGui::TextWrapped("%s", snapshot.error.c_str());
+        ui::wrappedText("%s", snapshot.error.c_str());
         ImGui::PopStyleColor();
     }
 }

@@ -8,9 +8,14 @@
 namespace radiant {
 namespace {
 
+/// In m^2 as `--max-patch-area` takes it, and in cm^2 as the lab's meshing slider shows it, since
+/// the same reason is printed by the commands and shown under the slider.
 std::string squareMetres(double area) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g m^2", area);
+    char text[64];
+    if (area < 1.0)
+        std::snprintf(text, sizeof text, "%g m^2 (%g cm^2)", area, area * 1e4);
+    else
+        std::snprintf(text, sizeof text, "%g m^2", area);
     return text;
 }
 

@@ -82,7 +82,7 @@ TEST_CASE("the built-in scenes of large quads are never grouped by default: the 
     const nlohmann::json report = nlohmann::json::parse(run.out);
     CHECK(report["grouped"] == false);
     CHECK(report["unknowns"] == report["patches"]);
-    CHECK(contains(report["grouping_reason"].get<std::string>(), "off: no surface is tessellated finer than 0.05 m^2"));
+    CHECK(contains(report["grouping_reason"].get<std::string>(), "off: no surface is tessellated finer than 0.05 m^2 (500 cm^2)"));
 }
 
 TEST_CASE("radiant solve groups a finely tessellated object by default: unknowns near its area over --max-patch-area") {

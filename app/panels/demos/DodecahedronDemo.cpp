@@ -16,6 +16,7 @@
 #include "app/panels/demos/LectureDemos.h"
 #include "radiometry/solidangle/ClosedFormSolidAngles.h"
 #include "radiometry/solidangle/PolygonSolidAngle.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -159,7 +160,7 @@ void DodecahedronDemo::draw() {
     ImGui::Text("4 pi / %d = %.4f sr", n.faces, n.perFace.value());
     ImGui::Text("from one face's corners: %.4f sr", n.polygonRoute.value());
     ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ImGui::TextWrapped("whole sphere 4 pi = %.3f sr; a dodecahedron face is the lecture's \"1 sr\"",
+    ui::wrappedText("whole sphere 4 pi = %.3f sr; a dodecahedron face is the lecture's \"1 sr\"",
                        kSphereSolidAngle.value());
     ImGui::PopStyleColor();
 }

@@ -9,6 +9,7 @@
 #include "app/panels/demos/DemoText.h"
 #include "app/panels/demos/LectureDemos.h"
 #include "radiometry/sources/SunExample.h"
+#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
@@ -151,7 +152,7 @@ void SunDemo::draw() {
         ImGui::PopTextWrapPos();
         ImGui::EndTable();
     }
-    ImGui::TextWrapped("Lecture: %.4g W on 1 m^2 at Earth (omega rounded to 6.7e-5 sr); from the geometry "
+    ui::wrappedText("Lecture: %.4g W on 1 m^2 at Earth (omega rounded to 6.7e-5 sr); from the geometry "
                        "(R = %.3g m, 1 au) omega = %.4g sr and E = %.1f W/m^2: %.1f %% more.",
                        n.earth.lectureIrradiance.value(), n.sunRadius.value(), n.earth.exactSolidAngle.value(),
                        n.earth.irradiance.value(), 100.0 * (n.earth.irradiance.value() / n.earth.lectureIrradiance.value() - 1));
