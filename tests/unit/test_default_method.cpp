@@ -207,3 +207,31 @@ TEST_CASE("in the lab a picked method stays across re-meshing, and its refusal n
 }
 
 } // TEST_SUITE
+
+TEST_SUITE("default method") {
+
+TEST_CASE("a Blender-style room file gets its method by size: hierarchical over 3,000 patches, progressive over its groups at the lab's opening area") {
+    // tests/data/grouping/sphere_room.gltf (make_sphere_room.py): a 57 m^2 room around a UV sphere.
+    const std::string room = std::string("'") + RADIANT_TEST_DATA_DIR + "/grouping/sphere_room.gltf'";
+    const Run fine = runRadiant("solve " + room + " --max-patch-area 0.01 --max-iterations 1 --json -");
+    INFO(fine.err);
+    REQUIRE(fine.status == 0);
+    const nlohmann::json fineReport = nlohmann::json::parse(fine.out);
+    CHECK(fineReport["method"] == "hierarchical");
+    CHECK(fineReport["patches"].get<int>() > 3000);
+    CHECK(contains(fine.err, "radiant: method: hierarchical ("));
+    CHECK(contains(fine.err, "hierarchical above 3,000 patches"));
+
+    // At the lab's opening area for this room the sphere's patches are grouped and progressive
+    // refinement solves the groups.
+    const Run coarse = runRadiant("solve " + room + " --max-patch-area 0.025 --max-iterations 1 --json -");
+    INFO(coarse.err);
+    REQUIRE(coarse.status == 0);
+    const nlohmann::json coarseReport = nlohmann::json::parse(coarse.out);
+    CHECK(coarseReport["method"] == "progressive");
+    CHECK(coarseReport["grouped"] == true);
+    CHECK(coarseReport["unknowns"].get<int>() < coarseReport["patches"].get<int>());
+    CHECK(contains(coarse.err, "radiant: method: progressive ("));
+}
+
+} // TEST_SUITE
