@@ -1,6 +1,7 @@
 #include "app/panels/PathTracedReading.h"
 
 #include <exception>
+#include <thread>
 #include <utility>
 
 #include "app/solver/ThreadPriority.h"
@@ -10,6 +11,33 @@
 #include "radiometry/reference/ReferencePoint.h"
 
 namespace radiant::app {
+namespace {
+
+/// Sleeps while frames are being drawn (the last one under kStillViewFor ago), saying so in the
+/// state; false when a stop was requested meanwhile.
+template <class Shared>
+bool waitForStillView(Shared& shared, const std::stop_token& stopToken) {
+    using Clock = std::chrono::steady_clock;
+    bool said = false;
+    for (;;) {
+        if (stopToken.stop_requested()) return false;
+        const Clock::time_point lastFrame{Clock::duration{shared.lastFrame.load(std::memory_order_relaxed)}};
+        const Clock::duration sinceFrame = Clock::now() - lastFrame;
+        if (sinceFrame >= PathTracedReading::kStillViewFor) break;
+        if (!said) {
+            const std::lock_guard lock(shared.mutex);
+            shared.state.waitingForStillView = said = true;
+        }
+        std::this_thread::sleep_for(PathTracedReading::kStillViewFor - sinceFrame);
+    }
+    if (said) {
+        const std::lock_guard lock(shared.mutex);
+        shared.state.waitingForStillView = false;
+    }
+    return true;
+}
+
+} // namespace
 
 void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayCaster> rays,
                               const glm::dvec3& point, const glm::dvec3& normal) {
@@ -19,7 +47,7 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
     shared_->state.refining = true;
     worker_ = std::jthread([shared = shared_, scene = std::move(scene), rays = std::move(rays), point,
                             normal](std::stop_token stopToken) {
-        yieldToTheDisplay();  // the helper threads of each batch inherit the idle priority
+        yieldToTheDisplay();  // the helper threads of each batch inherit the low priority
         const auto publish = [&](auto&& change) {
             const std::lock_guard lock(shared->mutex);
             change(shared->state);
@@ -38,6 +66,7 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
             options.threads = 1;
             ReferenceRun run(tracer, at, options);
             for (;;) {
+                if (run.estimate().samples >= kMinimumSamples && !waitForStillView(*shared, stopToken)) break;
                 run.addBatches(1);
                 const ReferenceEstimate estimate = run.estimate();
                 const bool done = converged(estimate);
@@ -61,6 +90,10 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
             });
         }
     });
+}
+
+void PathTracedReading::noteFrameDrawn() {
+    if (shared_) shared_->lastFrame.store(std::chrono::steady_clock::now().time_since_epoch().count(), std::memory_order_relaxed);
 }
 
 void PathTracedReading::stop() {

@@ -91,6 +91,7 @@ void ProbePanel::setTarget(std::size_t surface) {
 }
 
 void ProbePanel::update() {
+    pathTraced_.noteFrameDrawn();
     const Snapshot& snapshot = live_.snapshot();
     if (job_.valid() && job_.wait_for(std::chrono::seconds(0)) == std::future_status::ready) {
         Measured measured = job_.get();
@@ -367,7 +368,9 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
     // it met it (a run that stops short of it, stopped by a new pick, shows neither).
     const double target = 100 * PathTracedReading::kTargetRelativeError;
     char status[64] = "";
-    if (state.refining)
+    if (state.waitingForStillView)
+        std::snprintf(status, sizeof status, ", paused while the view redraws");
+    else if (state.refining)
         std::snprintf(status, sizeof status, ", refining to \xC2\xB1%.2f%%", target);
     else if (PathTracedReading::converged(e))
         std::snprintf(status, sizeof status, ", converged (target \xC2\xB1%.2f%%)", target);
@@ -378,7 +381,8 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The path tracer stops once the standard error of E is under %.2f%% in every band: the\n"
                           "differences above show tenths of a percent. It traces on one background thread at the\n"
-                          "solver's low priority, so it never takes more than one core from the 3D view.",
+                          "solver's low priority, and after its first estimate only while the view is still: a\n"
+                          "running solve or a moving camera redraws the view, and the view's frames come first.",
                           target);
 }
 

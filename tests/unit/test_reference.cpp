@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cstdint>
 #include <thread>
 #include <cstdio>
 #include <cstdlib>
@@ -370,12 +371,19 @@ TEST_CASE("a point on no surface, a zero normal and a normal facing away are err
 TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and stops on request, and reports a back face") {
     const auto scene = std::make_shared<const Scene>(makeParallelPlates());
     const auto rays = std::make_shared<const RayCaster>(*scene);
+    // The tracer runs at low priority: on a busy machine it crawls, so the wait fails only after
+    // 120 s without a new batch, not after a fixed time.
     const auto waitUntilDone = [](const app::PathTracedReading& reading) {
-        const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
         app::PathTracedReading::State state = reading.state();
+        std::uint64_t samples = 0;
         while (state.refining && std::chrono::steady_clock::now() < deadline) {
             std::this_thread::sleep_for(std::chrono::milliseconds(5));
             state = reading.state();
+            if (state.estimate && state.estimate->samples > samples) {
+                samples = state.estimate->samples;
+                deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+            }
         }
         return state;
     };
@@ -409,6 +417,59 @@ TEST_CASE("the Probe panel background path tracer refines to 0.1%, restarts and 
     const app::PathTracedReading::State refused = waitUntilDone(reading);
     CHECK_FALSE(refused.estimate);
     CHECK(refused.error.find("degrees from the front of surface 'receiver'") != std::string::npos);
+}
+
+TEST_CASE("the Probe panel path tracer gives a first estimate at once, then refines only while no frames are drawn") {
+    const auto scene = std::make_shared<const Scene>(makeParallelPlates());
+    const auto rays = std::make_shared<const RayCaster>(*scene);
+    app::PathTracedReading reading;
+    reading.start(scene, rays, {0.5, 1, 0.5}, {0, -1, 0});
+    // Frames every 10 ms, as a running solve draws them. Waits fail after 120 s without progress.
+    const auto drawFramesUntil = [&](auto&& done) {
+        auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        std::uint64_t samples = 0;
+        for (;;) {
+            reading.noteFrameDrawn();
+            const app::PathTracedReading::State state = reading.state();
+            if (done(state)) return state;
+            if (state.estimate && state.estimate->samples > samples) {
+                samples = state.estimate->samples;
+                deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+            }
+            REQUIRE(std::chrono::steady_clock::now() < deadline);
+            std::this_thread::sleep_for(std::chrono::milliseconds(10));
+        }
+    };
+    const app::PathTracedReading::State paused =
+        drawFramesUntil([](const app::PathTracedReading::State& state) { return state.waitingForStillView; });
+    REQUIRE(paused.estimate);
+    CHECK(paused.estimate->samples >= app::PathTracedReading::kMinimumSamples);
+    CHECK(paused.refining);
+    // Half a second more of frames: not one more path.
+    const auto until = std::chrono::steady_clock::now() + std::chrono::milliseconds(500);
+    const app::PathTracedReading::State still =
+        drawFramesUntil([&](const app::PathTracedReading::State&) { return std::chrono::steady_clock::now() >= until; });
+    REQUIRE(still.estimate);
+    CHECK(still.estimate->samples == paused.estimate->samples);
+    CHECK(still.waitingForStillView);
+
+    // The frames stop: it refines to its target and stops.
+    auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    std::uint64_t samples = 0;
+    app::PathTracedReading::State state = reading.state();
+    while (state.refining) {
+        REQUIRE(std::chrono::steady_clock::now() < deadline);
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+        state = reading.state();
+        if (state.estimate && state.estimate->samples > samples) {
+            samples = state.estimate->samples;
+            deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+        }
+    }
+    REQUIRE(state.estimate);
+    CHECK(app::PathTracedReading::converged(*state.estimate));
+    CHECK_FALSE(state.waitingForStillView);
+    CHECK(state.estimate->samples > paused.estimate->samples);
 }
 
 TEST_CASE("the Probe panel path tracer's stopping rule: the target standard error, after a minimum of paths") {
