@@ -309,11 +309,19 @@ inline SourceRule makeSourceRule(const PatchPolygon& source) {
 }
 
 /// gaussFormFactor (`far` false) or farFieldFormFactor (`far` true) by the source's precomputed nodes:
-/// the same rules, negative when a corner of the source is below x's tangent plane.
+/// the same rules, negative when a corner of the source is below x's tangent plane. A corner on that
+/// plane (within 1e-9 of its distance from x: round-off) does not count as below: a source touching
+/// x's plane (a wall's element along the floor, seen from the floor) has no horizon to clip, its
+/// kernel stays smooth (the cosine at x falls linearly to zero at the touching edge), and the rule
+/// holds as well there (tests/unit/test_hierarchical_scaling.cpp, against the catalog's perpendicular
+/// rectangle). Such sources were 3 in 4 of the rows' exact kernels that lay beyond the rules' distance.
 inline double ruleFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source, const SourceRule& rule,
                              bool far) {
-    for (int i = 0; i < source.count; ++i)
-        if (glm::dot(n, source.vertices[static_cast<std::size_t>(i)] - x) <= 0) return -1;
+    for (int i = 0; i < source.count; ++i) {
+        const glm::dvec3 r = source.vertices[static_cast<std::size_t>(i)] - x;
+        const double height = glm::dot(n, r);
+        if (height < 0 && height * height > 1e-18 * glm::dot(r, r)) return -1;
+    }
     if (glm::dot(source.normal, x - source.centroid) <= 0) return 0;  // behind the emitting side
     const glm::dvec3* nodes = far ? rule.far.data() : rule.gauss.data();
     const double* weights = far ? rule.farWeight.data() : rule.gaussWeight.data();
