@@ -200,9 +200,9 @@ TEST_CASE("hierarchical far field: within 0.2% of Lambert's exact kernel where r
             if (estimate < 0) return;  // straddles the horizon: the exact kernel is used
             ++compared;
             CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(0.002));
-            // The rows' precomputed nodes give the same rule.
+            // The rows' precomputed nodes give the same rule (in float there: within 1e-6).
             CHECK(hierarchical::ruleFormFactor(x, normal, source, hierarchical::makeSourceRule(source), true) ==
-                  doctest::Approx(estimate).scale(0).epsilon(1e-12));
+                  doctest::Approx(estimate).scale(0).epsilon(1e-6));
             // No point sees more than a differential source facing it squarely would give.
             CHECK(exact <= source.area / (std::numbers::pi * r * r) * 1.01);
         });
@@ -235,7 +235,7 @@ TEST_CASE("hierarchical gather kernel: the 3 x 3 Gauss rule within 0.02% of Lamb
             ++compared;
             CHECK(estimate == doctest::Approx(exact).scale(0).epsilon(2e-4));
             CHECK(hierarchical::ruleFormFactor(x, normal, source, hierarchical::makeSourceRule(source), false) ==
-                  doctest::Approx(estimate).scale(0).epsilon(1e-12));
+                  doctest::Approx(estimate).scale(0).epsilon(1e-6));
         });
     CHECK(compared > 120);
 }
