@@ -402,6 +402,7 @@ void HierarchicalSolver::buildLeafRows() {
             if (!tree_.isLeaf(leaf)) continue;
             const PatchPolygon& p = tree_.polygon(leaf);
             std::vector<GatherTerm>& row = rows[i];
+            const double leafIrradiance = leaf < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[leaf]) : 0.0;
             for (ElementIndex e = leaf; e != kNoElement; e = tree_.parent(e))
                 for (std::uint32_t k = receiverLinkBegin_[e]; k < receiverLinkBegin_[e + 1]; ++k) {
                     const Link& link = links_[receiverLinks_[k]];
@@ -435,7 +436,10 @@ void HierarchicalSolver::buildLeafRows() {
                         }
                         const double f = meanKernelAt(p, polygon, sourceRules_[q]);
                         if (f <= 0) return;
-                        const double v = perTerm ? hierarchical::elementVisibility(p, polygon, *caster_, kTermVisibilityRays,
+                        // A term that brings the leaf under kBrightHidden of its light casts the patch
+                        // rows' fewer rays for dim terms.
+                        const bool dim = maxBand(tree_.radiosity()[q]) * f < kBrightHidden * leafIrradiance;
+                        const double v = perTerm ? hierarchical::elementVisibility(p, polygon, *caster_, dim ? kDimTermVisibilityRays : kTermVisibilityRays,
                                                                                    hierarchical::mix(options_.seed ^ 0x1eafull ^ ((static_cast<std::uint64_t>(leaf) << 32) | q)))
                                                  : share;
                         terms.push_back({q, f, v});
