@@ -3,9 +3,7 @@
 // gathering are independent per link. Work is handed out in chunks from an atomic counter, because
 // links near the light cost many more rays than the rest. The shared WorkerPool's sleeping helpers run
 // it (a refinement step makes dozens of short parallel passes; starting threads for each cost more
-// than some passes); a second caller (the lab's second solver) waits for them (WorkerPool.h), a
-// nested call runs on its own thread as thread 0, and fresh threads start only where more are asked
-// for than the pool has (tests of thread counts).
+// than some passes), or fresh threads when another solver holds the pool.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -59,14 +57,10 @@ void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body
         const unsigned thread = nextThread.fetch_add(1, std::memory_order_relaxed);
         if (thread < threads) work(thread);
     };
-    if (pool.helperCount() + 1 < threads) {
+    if (pool.helperCount() + 1 < threads || !pool.tryRunOnAll(job)) {
         std::vector<std::jthread> workers;
         workers.reserve(threads - 1);
         for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, t);
-        work(0);
-    } else if (!pool.runOnAll(job, [cancellation] {
-                   if (cancellation) cancellation->checkCancelled();
-               })) {
         work(0);
     }  // joins
     if (failure) std::rethrow_exception(failure);

@@ -1,16 +1,16 @@
 #pragma once
 // Splits [0, count) into chunks handed out through an atomic counter to one thread per core, so
 // uneven rows (a form-factor row i has n - i - 1 pairs) still balance. The threads are the shared
-// WorkerPool's persistent helpers; a second caller (the lab's second solver) waits for them, and a
-// call from inside a job runs serially: the pool's threads already fill the cores, and more threads
-// than cores only take turns with the window's drawing threads (issue #16's comparison frames). The
-// first exception a worker throws is rethrown on the calling thread after every worker has stopped.
+// WorkerPool's persistent helpers; when another caller holds the pool, fresh std::jthreads as
+// before, and a call from inside a job runs on its own thread. The first exception a worker throws
+// is rethrown on the calling thread after every worker has stopped.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
 #include <mutex>
 #include <thread>
+#include <vector>
 
 #include "radiometry/common/CancellationScope.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -28,14 +28,11 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
     const Progress* const cancellation = CancellationScope::current();
     const std::size_t chunks = (count + grain - 1) / grain;
     const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(workerCount(), chunks));
-    const auto serially = [&] {
+    if (threads <= 1 || WorkerPool::calledFromJob()) {
         for (std::size_t begin = 0; begin < count; begin += grain) {
             if (cancellation) cancellation->checkCancelled();
             body(begin, std::min(count, begin + grain));
         }
-    };
-    if (threads <= 1 || WorkerPool::calledFromJob()) {
-        serially();
         return;
     }
     std::atomic<std::size_t> next{0};
@@ -56,13 +53,16 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
             failed = true;
         }
     };
-    const auto whileWaiting = [cancellation] {
-        if (cancellation) cancellation->checkCancelled();
-    };
-    if (!WorkerPool::shared().runOnAll(work, whileWaiting)) {
-        serially();
+    if (WorkerPool::shared().tryRunOnAll(work)) {
+        if (firstError) std::rethrow_exception(firstError);
         return;
     }
+    {
+        std::vector<std::jthread> helpers;
+        helpers.reserve(threads - 1);
+        for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
+        work();
+    }  // the jthreads join here
     if (firstError) std::rethrow_exception(firstError);
 }
 

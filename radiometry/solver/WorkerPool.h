@@ -1,12 +1,9 @@
 #pragma once
 // A persistent set of helper threads for parallelFor: a progressive shot is a few milliseconds of
 // work, so starting and joining threads on every shot would be a visible share of it. The helpers
-// sleep on a condition variable between jobs. One caller uses the pool at a time: a nested call is
-// told so and runs serially; a second caller (the lab's second solver) waits for the pool, since
-// its own threads beside the pool's would only be more threads than cores, taking turns with the
-// window's drawing threads (issue #16's comparison frames).
+// sleep on a condition variable between jobs. One caller uses the pool at a time; a second caller
+// (another solver on another thread) or a nested call is told so and takes another route.
 #include <algorithm>
-#include <chrono>
 #include <condition_variable>
 #include <cstdint>
 #include <functional>
@@ -36,29 +33,10 @@ public:
     [[nodiscard]] unsigned helperCount() const { return static_cast<unsigned>(threads_.size()); }
 
     /// Runs job() on the calling thread and on every helper at once and returns when all have
-    /// returned; job must not throw. While another caller holds the pool it waits, calling
-    /// whileWaiting() every few milliseconds (which may throw, as a cancellation check does, to stop
-    /// waiting). Returns false, running nothing, when called from inside a job.
-    template <class WhileWaiting>
-    bool runOnAll(const std::function<void()>& job, WhileWaiting&& whileWaiting) {
-        if (insideJob()) return false;
-        while (!inUse_.try_lock_for(std::chrono::milliseconds(2))) whileWaiting();
-        runLocked(job);
-        return true;
-    }
-
-    /// The process-wide pool: one helper per hardware thread beyond the caller's.
-    static WorkerPool& shared() {
-        static WorkerPool pool(std::max(1u, std::thread::hardware_concurrency()) - 1);
-        return pool;
-    }
-
-    /// True on a thread that is running a job of any pool (nested parallel loops stay serial).
-    static bool calledFromJob() { return insideJob(); }
-
-private:
-    /// Runs job() on the caller and the helpers; inUse_ is held and released here.
-    void runLocked(const std::function<void()>& job) {
+    /// returned. job must not throw. Returns false, running nothing, when the pool is in use by
+    /// another caller or when called from inside a job.
+    bool tryRunOnAll(const std::function<void()>& job) {
+        if (insideJob() || !inUse_.try_lock()) return false;
         const std::lock_guard release(inUse_, std::adopt_lock);
         {
             const std::lock_guard lock(mutex_);
@@ -73,8 +51,19 @@ private:
         std::unique_lock lock(mutex_);
         finished_.wait(lock, [this] { return running_ == 0; });
         job_ = nullptr;
+        return true;
     }
 
+    /// The process-wide pool: one helper per hardware thread beyond the caller's.
+    static WorkerPool& shared() {
+        static WorkerPool pool(std::max(1u, std::thread::hardware_concurrency()) - 1);
+        return pool;
+    }
+
+    /// True on a thread that is running a job of any pool (nested parallel loops stay serial).
+    static bool calledFromJob() { return insideJob(); }
+
+private:
     static bool& insideJob() {
         thread_local bool inside = false;
         return inside;
@@ -96,7 +85,7 @@ private:
         }
     }
 
-    std::timed_mutex inUse_;  ///< held by the caller of runOnAll for the whole job
+    std::mutex inUse_;  ///< held by the caller of tryRunOnAll for the whole job
     std::mutex mutex_;  ///< guards the fields below
     std::condition_variable wake_, finished_;
     const std::function<void()>* job_ = nullptr;

@@ -2,9 +2,7 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
-#include <chrono>
 #include <cstddef>
-#include <thread>
 
 #include "radiometry/common/CancellationScope.h"
 #include "radiometry/common/Error.h"
@@ -72,53 +70,6 @@ TEST_CASE("outside every scope (the command line, the tests) a loop runs to the 
         CHECK(CancellationScope::current() == &progress);
     }
     CHECK(CancellationScope::current() == nullptr);
-}
-
-TEST_CASE("a second caller waits for the pool instead of adding threads, and a cancellation stops its wait") {
-    if (workerCount() < 2) {
-        MESSAGE("one hardware thread: loops run serially and no pool is shared");
-        return;
-    }
-    // The first caller holds the pool until released (chunk 0 waits; chunk 1 runs on the other thread).
-    std::atomic<bool> firstRunning{false}, releaseFirst{false};
-    std::jthread first([&] {
-        parallelFor(2, 1, [&](std::size_t begin, std::size_t) {
-            if (begin != 0) return;
-            firstRunning.store(true);
-            while (!releaseFirst.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-        });
-    });
-    while (!firstRunning.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
-
-    // Cancelled while it waits: it throws and has run nothing.
-    std::atomic<std::size_t> ran{0};
-    Progress progress;
-    {
-        std::jthread canceller([&] {
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            progress.cancelRequested.store(true);
-        });
-        const CancellationScope scope(progress);
-        CHECK_THROWS_AS(parallelFor(100, 1, [&](std::size_t begin, std::size_t end) { ran.fetch_add(end - begin); }),
-                        Cancelled);
-        CHECK_THROWS_AS(parallelChunks(100, 2, 1, [&](std::size_t begin, std::size_t end, unsigned) { ran.fetch_add(end - begin); }),
-                        Cancelled);
-    }
-    CHECK(ran.load() == 0);
-
-    // Not cancelled: nothing runs while the first holds the pool, everything once it lets go.
-    std::atomic<bool> secondDone{false};
-    std::jthread second([&] {
-        parallelFor(100, 1, [&](std::size_t begin, std::size_t end) { ran.fetch_add(end - begin); });
-        secondDone.store(true);
-    });
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    CHECK(ran.load() == 0);
-    CHECK_FALSE(secondDone.load());
-    releaseFirst.store(true);
-    first.join();
-    second.join();
-    CHECK(ran.load() == 100);
 }
 
 } // TEST_SUITE
