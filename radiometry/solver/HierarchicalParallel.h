@@ -3,7 +3,9 @@
 // gathering are independent per link. Work is handed out in chunks from an atomic counter, because
 // links near the light cost many more rays than the rest. The shared WorkerPool's sleeping helpers run
 // it (a refinement step makes dozens of short parallel passes; starting threads for each cost more
-// than some passes), or fresh threads when another solver holds the pool.
+// than some passes). When another caller holds the pool (the lab's second solver), the loop runs on
+// the calling thread alone, as thread 0: the pool's threads already fill the cores (ParallelFor.h).
+// Fresh threads only where more are asked for than the pool has (tests of thread counts).
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
@@ -57,10 +59,12 @@ void parallelChunks(std::size_t count, unsigned threads, std::size_t chunk, Body
         const unsigned thread = nextThread.fetch_add(1, std::memory_order_relaxed);
         if (thread < threads) work(thread);
     };
-    if (pool.helperCount() + 1 < threads || !pool.tryRunOnAll(job)) {
+    if (pool.helperCount() + 1 < threads) {
         std::vector<std::jthread> workers;
         workers.reserve(threads - 1);
         for (unsigned t = 1; t < threads; ++t) workers.emplace_back(work, t);
+        work(0);
+    } else if (!pool.tryRunOnAll(job)) {
         work(0);
     }  // joins
     if (failure) std::rethrow_exception(failure);

@@ -1,16 +1,17 @@
 #pragma once
 // Splits [0, count) into chunks handed out through an atomic counter to one thread per core, so
 // uneven rows (a form-factor row i has n - i - 1 pairs) still balance. The threads are the shared
-// WorkerPool's persistent helpers; when another caller holds the pool, fresh std::jthreads as
-// before, and a call from inside a job runs on its own thread. The first exception a worker throws
-// is rethrown on the calling thread after every worker has stopped.
+// WorkerPool's persistent helpers. When another caller holds the pool (the lab's second solver), or
+// the call comes from inside a job, the loop runs on the calling thread alone: the pool's threads
+// already fill the cores, and more threads than cores only took turns with the window's drawing
+// threads (issue #16's comparison frames). The first exception a worker throws is rethrown on the
+// calling thread after every worker has stopped.
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
 #include <exception>
 #include <mutex>
 #include <thread>
-#include <vector>
 
 #include "radiometry/common/CancellationScope.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -28,11 +29,14 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
     const Progress* const cancellation = CancellationScope::current();
     const std::size_t chunks = (count + grain - 1) / grain;
     const unsigned threads = static_cast<unsigned>(std::min<std::size_t>(workerCount(), chunks));
-    if (threads <= 1 || WorkerPool::calledFromJob()) {
+    const auto serially = [&] {
         for (std::size_t begin = 0; begin < count; begin += grain) {
             if (cancellation) cancellation->checkCancelled();
             body(begin, std::min(count, begin + grain));
         }
+    };
+    if (threads <= 1 || WorkerPool::calledFromJob()) {
+        serially();
         return;
     }
     std::atomic<std::size_t> next{0};
@@ -53,16 +57,10 @@ void parallelFor(std::size_t count, std::size_t grain, Body&& body) {
             failed = true;
         }
     };
-    if (WorkerPool::shared().tryRunOnAll(work)) {
-        if (firstError) std::rethrow_exception(firstError);
+    if (!WorkerPool::shared().tryRunOnAll(work)) {
+        serially();
         return;
     }
-    {
-        std::vector<std::jthread> helpers;
-        helpers.reserve(threads - 1);
-        for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work);
-        work();
-    }  // the jthreads join here
     if (firstError) std::rethrow_exception(firstError);
 }
 

@@ -2,7 +2,7 @@
 // A persistent set of helper threads for parallelFor: a progressive shot is a few milliseconds of
 // work, so starting and joining threads on every shot would be a visible share of it. The helpers
 // sleep on a condition variable between jobs. One caller uses the pool at a time; a second caller
-// (another solver on another thread) or a nested call is told so and takes another route.
+// (another solver on another thread) or a nested call is told so and runs its loop on its own thread.
 #include <algorithm>
 #include <condition_variable>
 #include <cstdint>

@@ -2,7 +2,11 @@
 #include <doctest/doctest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cstddef>
+#include <mutex>
+#include <set>
+#include <thread>
 
 #include "radiometry/common/CancellationScope.h"
 #include "radiometry/common/Error.h"
@@ -70,6 +74,40 @@ TEST_CASE("outside every scope (the command line, the tests) a loop runs to the 
         CHECK(CancellationScope::current() == &progress);
     }
     CHECK(CancellationScope::current() == nullptr);
+}
+
+TEST_CASE("a second caller of a held pool runs its loop on its own thread, not on threads of its own") {
+    if (workerCount() < 2) {
+        MESSAGE("one hardware thread: loops run serially and no pool is shared");
+        return;
+    }
+    // The first caller holds the pool until released (chunk 0 waits; chunk 1 runs on the other thread).
+    std::atomic<bool> firstRunning{false}, releaseFirst{false};
+    std::jthread first([&] {
+        parallelFor(2, 1, [&](std::size_t begin, std::size_t) {
+            if (begin != 0) return;
+            firstRunning.store(true);
+            while (!releaseFirst.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+        });
+    });
+    while (!firstRunning.load()) std::this_thread::sleep_for(std::chrono::milliseconds(1));
+
+    std::mutex mutex;
+    std::set<std::thread::id> ran;
+    std::size_t indices = 0;
+    const auto note = [&](std::size_t begin, std::size_t end) {
+        const std::lock_guard lock(mutex);
+        ran.insert(std::this_thread::get_id());
+        indices += end - begin;
+    };
+    parallelFor(100, 1, note);
+    parallelChunks(100, 2, 1, [&](std::size_t begin, std::size_t end, unsigned thread) {
+        CHECK(thread == 0);
+        note(begin, end);
+    });
+    CHECK(indices == 200);
+    CHECK(ran == std::set<std::thread::id>{std::this_thread::get_id()});
+    releaseFirst.store(true);
 }
 
 } // TEST_SUITE
