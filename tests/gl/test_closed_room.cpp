@@ -20,6 +20,7 @@
 #include "render/PatchRenderer.h"
 #include "render/camera/Camera.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using radiant::app::Lab;
@@ -28,12 +29,9 @@ namespace command = radiant::app::command;
 
 using radiant::test::frameUntil;
 
-namespace {
+using radiant::test::requireDisplay;
 
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
+namespace {
 
 /// Mean colour (0..255 per channel) of a (2r+1)^2 block of pixels around `centre`.
 glm::dvec3 meanColour(const render::ImageRgb8& image, const glm::dvec3& centre, int r = 3) {

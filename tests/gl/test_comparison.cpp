@@ -18,6 +18,7 @@
 #include "render/ColourScale.h"
 #include "render/camera/Camera.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using radiant::app::ComparisonSettings;
@@ -28,12 +29,9 @@ namespace command = radiant::app::command;
 
 using radiant::test::frameUntil;
 
-namespace {
+using radiant::test::requireDisplay;
 
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
+namespace {
 
 LabOptions options(const char* scene, double patchArea) {
     LabOptions o;

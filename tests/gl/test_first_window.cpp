@@ -12,20 +12,16 @@
 #include "app/solver/Snapshot.h"
 #include "render/camera/Camera.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 using radiant::render::ImageRgb8;
 using radiant::render::Viewport;
 
-namespace {
+using radiant::test::requireDisplay;
 
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    REQUIRE_MESSAGE((display != nullptr && *display != '\0'),
-                    "no DISPLAY: the GL tests need an X server; run them as "
-                    "xvfb-run -a -s \"-screen 0 1600x1000x24\" radiant_gl_tests");
-}
+namespace {
 
 struct MeanColour {
     double r = 0, g = 0, b = 0;

@@ -25,6 +25,7 @@
 #include "render/Screenshot.h"
 #include "render/camera/Camera.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using radiant::app::Lab;
@@ -33,14 +34,11 @@ namespace command = radiant::app::command;
 
 using radiant::test::frameUntil;
 
+using radiant::test::requireDisplay;
+
 namespace {
 
 constexpr double kCoarsePatchArea = 0.05;  // m^2: about a hundred patches, form factors in well under a second
-
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
 
 LabOptions coarseCornell() {
     LabOptions options;

@@ -12,6 +12,7 @@
 #include "app/lessons/Lesson.h"
 #include "render/camera/Camera.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using radiant::app::Lab;
@@ -19,12 +20,9 @@ using radiant::app::LabOptions;
 
 using radiant::test::frameUntil;
 
-namespace {
+using radiant::test::requireDisplay;
 
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
+namespace {
 
 glm::dvec3 colourAt(const render::ImageRgb8& image, const glm::dvec3& pixel, int r = 2) {
     glm::dvec3 sum(0.0);

@@ -11,18 +11,16 @@
 #include "app/solver/SolverThread.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "tests/gl/FrameUntil.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 using radiant::test::frameUntil;
 
-namespace {
+using radiant::test::requireDisplay;
 
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    if (!display || !*display) FAIL("no X display: run the GL tests under Xvfb (scripts/test does: xvfb-run -a)");
-}
+namespace {
 
 LabOptions opening(const std::string& scene) {
     LabOptions options;

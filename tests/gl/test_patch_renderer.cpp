@@ -18,9 +18,12 @@
 #include "render/PatchRenderer.h"
 #include "render/gl/Framebuffer.h"
 #include "render/overlay/DepthVisibility.h"
+#include "tests/gl/RequireDisplay.h"
 
 using namespace radiant;
 using render::ImageRgb8;
+
+using radiant::test::requireDisplay;
 
 namespace {
 
@@ -28,13 +31,6 @@ constexpr int kPatches = 5;
 constexpr int kWidth = 480;
 constexpr int kHeight = 360;
 constexpr double kStep = 4.0;  // W/m^2: B_k = kStep k^2
-
-void requireDisplay() {
-    const char* display = std::getenv("DISPLAY");
-    REQUIRE_MESSAGE((display != nullptr && *display != '\0'),
-                    "no DISPLAY: the GL tests need an X server; run them as "
-                    "xvfb-run -a -s \"-screen 0 1600x1000x24\" radiant_gl_tests");
-}
 
 double radiosityOf(int k) { return kStep * k * k; }
 
