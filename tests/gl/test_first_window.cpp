@@ -18,7 +18,6 @@ using radiant::app::Lab;
 using radiant::app::LabOptions;
 using radiant::render::ImageRgb8;
 using radiant::render::Viewport;
-
 using radiant::test::requireDisplay;
 
 namespace {

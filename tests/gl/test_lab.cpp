@@ -33,7 +33,6 @@ using radiant::app::LabOptions;
 namespace command = radiant::app::command;
 
 using radiant::test::frameUntil;
-
 using radiant::test::requireDisplay;
 
 namespace {

@@ -19,7 +19,6 @@ using radiant::app::Lab;
 using radiant::app::LabOptions;
 
 using radiant::test::frameUntil;
-
 using radiant::test::requireDisplay;
 
 namespace {

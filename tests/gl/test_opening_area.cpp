@@ -17,7 +17,6 @@ using namespace radiant;
 using radiant::app::Lab;
 using radiant::app::LabOptions;
 using radiant::test::frameUntil;
-
 using radiant::test::requireDisplay;
 
 namespace {

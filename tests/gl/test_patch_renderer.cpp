@@ -22,7 +22,6 @@
 
 using namespace radiant;
 using render::ImageRgb8;
-
 using radiant::test::requireDisplay;
 
 namespace {
