@@ -8,11 +8,11 @@
 #include <filesystem>
 #include <set>
 
+#include "app/solver/Comparison.h"
 #include "app/solver/ConvergenceCsv.h"
 #include "app/solver/ConvergenceQuantity.h"
 #include "app/ui/Colours.h"
 #include "app/ui/ComparisonColours.h"
-#include "app/solver/Comparison.h"
 #include "app/ui/PlotAxes.h"
 #include "app/ui/WrappedText.h"
 
@@ -245,7 +245,7 @@ void ConvergencePlot::drawExport(const Snapshot& snapshot) {
     }
     if (!exportMessage_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, exportFailed_ ? theme::kErrorRed : theme::kDoneGreen);
-        ui::wrappedText("%s", exportMessage_.c_str());
+        ui::wrappedTextUnformatted(exportMessage_);
         ImGui::PopStyleColor();
     }
 }

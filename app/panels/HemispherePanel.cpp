@@ -14,12 +14,12 @@
 
 #include "app/ui/HorizontalColourBar.h"
 #include "app/ui/SidebarLayout.h"
+#include "app/ui/WrappedText.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/hemicube/HemicubeGather.h"
 #include "radiometry/hemisphere/HemisphericalCoordinates.h"
 #include "render/ColourScale.h"
 #include "render/SceneTriangles.h"
-#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {

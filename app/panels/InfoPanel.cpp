@@ -36,13 +36,13 @@ void InfoPanel::draw() {
     row("Context", "OpenGL %d.%d core", gl_.major, gl_.minor);
     if (!fallbackNote_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
-        ui::wrappedText("%s", fallbackNote_.c_str());
+        ui::wrappedTextUnformatted(fallbackNote_);
         ImGui::PopStyleColor();
     }
     ImGui::TextDisabled("Renderer");
-    ui::wrappedText("%s", gl_.renderer.c_str());
+    ui::wrappedTextUnformatted(gl_.renderer);
     ImGui::TextDisabled("Version");
-    ui::wrappedText("%s", gl_.version.c_str());
+    ui::wrappedTextUnformatted(gl_.version);
 
     ImGui::Spacing();
     ImGui::TextDisabled("Controls");

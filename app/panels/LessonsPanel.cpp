@@ -73,14 +73,14 @@ void LessonsPanel::draw() {
     if ((ImGui::Button("Open") || entered) && path_[0] != '\0') error_ = open_(path_.data());
     if (!error_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedText("%s", error_.c_str());
+        ui::wrappedTextUnformatted(error_);
         ImGui::PopStyleColor();
     }
 }
 
 void LessonsPanel::drawLesson() {
     const lesson::Lesson& lesson = player_.lesson();
-    ui::wrappedText("%s", lesson.title.c_str());
+    ui::wrappedTextUnformatted(lesson.title);
     ImGui::TextDisabled("step %zu of %zu%s", player_.step() + 1, player_.stepCount(),
                         player_.settled() ? "" : " (setting up)");
     ImGui::BeginDisabled(player_.step() == 0);

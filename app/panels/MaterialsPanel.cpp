@@ -170,7 +170,7 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     if (committed && refusal_.empty()) editing_ = false;
     if (!refusal_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        ui::wrappedText("%s", refusal_.c_str());
+        ui::wrappedTextUnformatted(refusal_);
         ImGui::PopStyleColor();
         if (ImGui::SmallButton("Revert")) {
             editing_ = false;

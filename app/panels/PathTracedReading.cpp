@@ -1,5 +1,6 @@
 #include "app/panels/PathTracedReading.h"
 
+#include <cstdint>
 #include <exception>
 #include <thread>
 #include <utility>
@@ -11,33 +12,6 @@
 #include "radiometry/reference/ReferencePoint.h"
 
 namespace radiant::app {
-namespace {
-
-/// Sleeps while frames are being drawn (the last one under kStillViewFor ago), saying so in the
-/// state; false when a stop was requested meanwhile.
-template <class Shared>
-bool waitForStillView(Shared& shared, const std::stop_token& stopToken) {
-    using Clock = std::chrono::steady_clock;
-    bool said = false;
-    for (;;) {
-        if (stopToken.stop_requested()) return false;
-        const Clock::time_point lastFrame{Clock::duration{shared.lastFrame.load(std::memory_order_relaxed)}};
-        const Clock::duration sinceFrame = Clock::now() - lastFrame;
-        if (sinceFrame >= PathTracedReading::kStillViewFor) break;
-        if (!said) {
-            const std::lock_guard lock(shared.mutex);
-            shared.state.waitingForStillView = said = true;
-        }
-        std::this_thread::sleep_for(PathTracedReading::kStillViewFor - sinceFrame);
-    }
-    if (said) {
-        const std::lock_guard lock(shared.mutex);
-        shared.state.waitingForStillView = false;
-    }
-    return true;
-}
-
-} // namespace
 
 void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_ptr<const RayCaster> rays,
                               const glm::dvec3& point, const glm::dvec3& normal) {
@@ -65,10 +39,11 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
             // frame time while it refined (README, "Benchmarks").
             options.threads = 1;
             ReferenceRun run(tracer, at, options);
-            for (;;) {
-                if (run.estimate().samples >= kMinimumSamples && !waitForStillView(*shared, stopToken)) break;
+            for (std::uint64_t samples = 0;;) {
+                if (samples >= kMinimumSamples && !shared->waitForStillView(stopToken)) break;
                 run.addBatches(1);
                 const ReferenceEstimate estimate = run.estimate();
+                samples = estimate.samples;
                 const bool done = converged(estimate);
                 publish([&](State& state) {
                     state.estimate = estimate;
@@ -90,6 +65,27 @@ void PathTracedReading::start(std::shared_ptr<const Scene> scene, std::shared_pt
             });
         }
     });
+}
+
+bool PathTracedReading::Shared::waitForStillView(const std::stop_token& stopToken) {
+    using Clock = std::chrono::steady_clock;
+    bool said = false;
+    for (;;) {
+        if (stopToken.stop_requested()) return false;
+        const Clock::time_point frame{Clock::duration{lastFrame.load(std::memory_order_relaxed)}};
+        const Clock::duration sinceFrame = Clock::now() - frame;
+        if (sinceFrame >= kStillViewFor) break;
+        if (!said) {
+            const std::lock_guard lock(mutex);
+            state.waitingForStillView = said = true;
+        }
+        std::this_thread::sleep_for(kStillViewFor - sinceFrame);
+    }
+    if (said) {
+        const std::lock_guard lock(mutex);
+        state.waitingForStillView = false;
+    }
+    return true;
 }
 
 void PathTracedReading::noteFrameDrawn() {

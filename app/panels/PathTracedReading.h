@@ -16,6 +16,7 @@
 #include <cstdint>
 #include <memory>
 #include <mutex>
+#include <stop_token>
 #include <optional>
 #include <string>
 #include <thread>
@@ -73,6 +74,9 @@ private:
         State state;
         /// steady_clock ticks of the last frame drawn (0: none yet)
         std::atomic<std::chrono::steady_clock::rep> lastFrame{0};
+        /// On the worker: sleeps while frames are drawn (the last under kStillViewFor ago), saying
+        /// so in `state`; false when a stop was requested meanwhile.
+        bool waitForStillView(const std::stop_token& stopToken);
     };
     std::shared_ptr<Shared> shared_;
     std::shared_ptr<const Scene> scene_;

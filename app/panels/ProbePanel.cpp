@@ -9,14 +9,14 @@
 #include <glm/geometric.hpp>
 
 #include "app/cli/ProbeCommandLine.h"
-#include "app/solver/ThreadPriority.h"
 #include "app/solver/SolutionDifference.h"
+#include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
 #include "app/ui/ComparisonColours.h"
 #include "app/ui/SidebarLayout.h"
+#include "app/ui/WrappedText.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/units/Photometry.h"
-#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 
@@ -200,7 +200,7 @@ void ProbePanel::draw() {
     }
     if (!error_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedText("%s", error_.c_str());
+        ui::wrappedTextUnformatted(error_);
         ImGui::PopStyleColor();
     }
     drawTarget(scene);
@@ -344,7 +344,7 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
                           "mesh and convergence you chose. +- is one standard error of the path tracer's estimate.");
     if (!state.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedText("%s", state.error.c_str());
+        ui::wrappedTextUnformatted(state.error);
         ImGui::PopStyleColor();
         return;
     }
@@ -374,10 +374,8 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
         std::snprintf(status, sizeof status, ", refining to \xC2\xB1%.2f%%", target);
     else if (PathTracedReading::converged(e))
         std::snprintf(status, sizeof status, ", converged (target \xC2\xB1%.2f%%)", target);
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ui::wrappedText("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
+    ui::wrappedTextDisabled("\xC2\xB1%.2f%% (one standard error), %.2g paths%s", 100 * e.relativeStandardError(),
                        static_cast<double>(e.samples), status);  // wrapped: the status may not fit beside it
-    ImGui::PopStyleColor();
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The path tracer stops once the standard error of E is under %.2f%% in every band: the\n"
                           "differences above show tenths of a percent. It traces on one background thread at the\n"

@@ -7,16 +7,15 @@
 
 #include "app/ui/Colours.h"
 #include "app/ui/SidebarLayout.h"
+#include "app/ui/WrappedText.h"
+#include "radiometry/common/PatchAreaText.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/solver/OpeningPatchArea.h"
 #include "radiometry/solver/SolveDefaults.h"
-#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {
-
-constexpr double kCm2PerM2 = 1e4;
 
 void row(const char* label, const char* format, auto... values) {
     ui::labelValueRow(label, 6.0f, format, values...);
@@ -67,9 +66,7 @@ void ScenePanel::draw() {
             row("Patches", "%s", patches.c_str());
         // Said where it changes the unknowns; an ungrouped scene says why under the box's tooltip.
         if (snapshot.groups) {
-            ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-            ui::wrappedText("Grouping %s", snapshot.groupingReason.c_str());
-            ImGui::PopStyleColor();
+            ui::wrappedTextDisabled("Grouping %s", snapshot.groupingReason.c_str());
         }
         row("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
@@ -110,13 +107,13 @@ void ScenePanel::draw() {
     for (const std::string* message : {static_cast<const std::string*>(&error_), &snapshot.error})
         if (!message->empty()) {
             ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-            ui::wrappedText("%s", message->c_str());
+            ui::wrappedTextUnformatted(*message);
             ImGui::PopStyleColor();
         }
     // The loader's warnings travel with the scene, so they show however it was opened.
     if (snapshot.scene && !snapshot.scene->warnings.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        for (const std::string& warning : snapshot.scene->warnings) ui::wrappedText("%s", warning.c_str());
+        for (const std::string& warning : snapshot.scene->warnings) ui::wrappedTextUnformatted(warning);
         ImGui::PopStyleColor();
     }
 }
@@ -140,9 +137,7 @@ void ScenePanel::drawMeshing() {
         live_.sendAndResume(command::Remesh{MeshingOptions{requested}});
     }
     if (!openingReason_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ui::wrappedText("Opened at %s", openingReason_.c_str());
-        ImGui::PopStyleColor();
+        ui::wrappedTextDisabled("Opened at %s", openingReason_.c_str());
     }
     if (ImGui::Checkbox("Group patches", &groupPatches_))
         live_.sendAndResume(command::SetGrouping{groupPatches_ ? GroupingMode::Auto : GroupingMode::Off});

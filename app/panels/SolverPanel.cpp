@@ -48,16 +48,12 @@ void SolverPanel::drawControls(const Snapshot& snapshot) {
         ImGui::EndCombo();
     }
     if (!snapshot.methodReason.empty()) {  // chosen by the scene's size until the user picks one
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-        ui::wrappedText("Default for this mesh: %s", snapshot.methodReason.c_str());
-        ImGui::PopStyleColor();
+        ui::wrappedTextDisabled("Default for this mesh: %s", snapshot.methodReason.c_str());
     }
     if (snapshot.methodTakesNoGroups) {  // a picked hierarchical solves the patches the Scene panel would group
-        ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
         const std::string_view reason = snapshot.groupingReason;
         const std::string_view why = reason.starts_with("off: ") ? reason.substr(5) : reason;
-        ui::wrappedText("Patches not grouped: %.*s", static_cast<int>(why.size()), why.data());
-        ImGui::PopStyleColor();
+        ui::wrappedTextDisabled("Patches not grouped: %.*s", static_cast<int>(why.size()), why.data());
     }
 
     const float buttonWidth = (ImGui::GetContentRegionAvail().x - 2.0f * ImGui::GetStyle().ItemSpacing.x) / 3.0f;
@@ -179,7 +175,7 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     row("Step time", "%.3f ms", stats.seconds * 1e3);
     if (!snapshot.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedText("%s", snapshot.error.c_str());
+        ui::wrappedTextUnformatted(snapshot.error);
         ImGui::PopStyleColor();
     }
 }

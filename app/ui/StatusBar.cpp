@@ -14,7 +14,7 @@ void textOnThisLineIfItFits(const char* text, bool disabled, float gap) {
     ImGui::SameLine(0, gap);
     if (ImGui::CalcTextSize(text).x > ImGui::GetContentRegionAvail().x) ImGui::NewLine();
     if (disabled) ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    ui::wrappedText("%s", text);
+    ui::wrappedTextUnformatted(text);
     if (disabled) ImGui::PopStyleColor();
 }
 
@@ -44,7 +44,7 @@ float drawStatusBar(const render::Viewport& view, const StatusLine& status) {
             ImGui::ProgressBar(0.0f, {barWidth, 0}, "...");
         textOnThisLineIfItFits(status.solve.c_str(), false, pad * 2.0f);
     } else {
-        ui::wrappedText("%s", status.solve.c_str());
+        ui::wrappedTextUnformatted(status.solve);
     }
     if (!status.message.empty()) textOnThisLineIfItFits(status.message.c_str(), true, pad * 2.0f);
     const float height = ImGui::GetWindowHeight();

@@ -114,17 +114,36 @@ void wrappedTextUnformatted(std::string_view unitsInAscii) {
         ImGui::TextUnformatted(line.data(), line.data() + line.size());
 }
 
-void wrappedText(const char* format, ...) {
-    std::va_list arguments;
-    va_start(arguments, format);
+namespace {
+
+std::string formatted(const char* format, std::va_list arguments) {
     std::va_list copy;
     va_copy(copy, arguments);
     const int length = std::vsnprintf(nullptr, 0, format, copy);
     va_end(copy);
     std::string text(length > 0 ? static_cast<std::size_t>(length) : 0, '\0');
     if (length > 0) std::vsnprintf(text.data(), text.size() + 1, format, arguments);
+    return text;
+}
+
+} // namespace
+
+void wrappedText(const char* format, ...) {
+    std::va_list arguments;
+    va_start(arguments, format);
+    const std::string text = formatted(format, arguments);
     va_end(arguments);
     wrappedTextUnformatted(text);
+}
+
+void wrappedTextDisabled(const char* format, ...) {
+    std::va_list arguments;
+    va_start(arguments, format);
+    const std::string text = formatted(format, arguments);
+    va_end(arguments);
+    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+    wrappedTextUnformatted(text);
+    ImGui::PopStyleColor();
 }
 
 } // namespace radiant::app::ui

@@ -24,6 +24,10 @@ std::string withSuperscriptSquares(std::string_view text);
 /// and withSuperscriptSquares. UI thread, inside a window.
 void wrappedText(const char* format, ...);
 
+/// wrappedText in the theme's dimmed colour, as ImGui::TextDisabled: the reasons and notes under a
+/// control, which say why rather than what.
+void wrappedTextDisabled(const char* format, ...);
+
 /// `text` as it is, wrapped as wrappedText does.
 void wrappedTextUnformatted(std::string_view text);
 

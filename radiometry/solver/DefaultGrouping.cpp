@@ -1,23 +1,11 @@
 #include "radiometry/solver/DefaultGrouping.h"
 
-#include <cstdio>
-
+#include "radiometry/common/PatchAreaText.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant {
 namespace {
-
-/// In m^2 as `--max-patch-area` takes it, and in cm^2 as the lab's meshing slider shows it, since
-/// the same reason is printed by the commands and shown under the slider.
-std::string squareMetres(double area) {
-    char text[64];
-    if (area < 1.0)
-        std::snprintf(text, sizeof text, "%g m^2 (%g cm^2)", area, area * 1e4);
-    else
-        std::snprintf(text, sizeof text, "%g m^2", area);
-    return text;
-}
 
 std::string patchesInGroups(const PatchMesh& mesh, const PatchGroups& groups) {
     return withThousands(mesh.size()) + " patches in " + withThousands(groups.size()) + " groups";
@@ -51,8 +39,8 @@ SystemChoice chooseSystem(const PatchMesh& mesh, double maxPatchArea, GroupingMo
     auto groups = std::make_shared<const PatchGroups>(groupPatches(mesh, options));
     if (groups->size() == mesh.size())
         return ungrouped(mode == GroupingMode::On
-                             ? "off: no two patches fit one group of " + squareMetres(maxPatchArea)
-                             : "off: no surface is tessellated finer than " + squareMetres(maxPatchArea) +
+                             ? "off: no two patches fit one group of " + patchAreaText(maxPatchArea)
+                             : "off: no surface is tessellated finer than " + patchAreaText(maxPatchArea) +
                                    " (grouped where a surface's 16 or more faces average at most half of it and "
                                    "grouping at least halves its patches)");
     if (named && !methodTakesGroups(*named)) {
@@ -73,7 +61,7 @@ SystemChoice chooseSystem(const PatchMesh& mesh, double maxPatchArea, GroupingMo
     }
     choice.groupingReason = "on" + std::string(mode == GroupingMode::On ? ", as asked" : "") + ": " +
                             patchesInGroups(mesh, *groups) + " (" + std::to_string(grouped) + " of " +
-                            std::to_string(surfaces) + " surfaces tessellated finer than " + squareMetres(maxPatchArea) +
+                            std::to_string(surfaces) + " surfaces tessellated finer than " + patchAreaText(maxPatchArea) +
                             ", grouped to about it)";
     choice.method = namedOr(named, chooseDefaultMethodForGroups(groups->size(), mesh.size()));
     choice.groups = std::move(groups);

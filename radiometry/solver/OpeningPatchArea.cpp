@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdio>
 
+#include "radiometry/common/PatchAreaText.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
@@ -12,15 +13,8 @@
 namespace radiant {
 namespace {
 
-constexpr double kCm2PerM2 = 1e4;
-
-std::string cm2(double m2) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g cm^2", m2 * kCm2PerM2);
-    return text;
-}
-
-std::string squareMetres(double area) {
+/// A scene's total area to three digits ("57.5 m^2"), in the reason only.
+std::string sceneAreaText(double area) {
     char text[32];
     std::snprintf(text, sizeof text, "%.3g m^2", area);
     return text;
@@ -39,7 +33,7 @@ OpeningArea openingPatchArea(const Scene& scene) {
     static const std::size_t cornell = patchesAt(makeCornellBox(), base);
     const std::size_t atBase = patchesAt(scene, base);
     if (atBase <= cornell)
-        return {base, cm2(base) + ", the default: " + withThousands(atBase) + " patches (a scene of more than the Cornell box's " +
+        return {base, inSquareCentimetres(base) + ", the default: " + withThousands(atBase) + " patches (a scene of more than the Cornell box's " +
                           withThousands(cornell) + " opens coarser)"};
     // Steps in cm^2 from the default's decade: 1, 2, 2.5, 5, 10, 20, 25, 50, ...
     const double decade = std::pow(10.0, std::floor(std::log10(base * kCm2PerM2) + 1e-9));
@@ -60,8 +54,8 @@ OpeningArea openingPatchArea(const Scene& scene) {
         if (found) break;
     }
     if (chosen == kMaxOpeningPatchArea) patches = patchesAt(scene, chosen);
-    return {chosen, cm2(chosen) + " for the scene's " + squareMetres(scene.totalArea()) + ": " + withThousands(patches) +
-                        " patches, about the Cornell box's " + withThousands(cornell) + " (" + cm2(base) + " would make " +
+    return {chosen, inSquareCentimetres(chosen) + " for the scene's " + sceneAreaText(scene.totalArea()) + ": " + withThousands(patches) +
+                        " patches, about the Cornell box's " + withThousands(cornell) + " (" + inSquareCentimetres(base) + " would make " +
                         withThousands(atBase) + ")"};
 }
 

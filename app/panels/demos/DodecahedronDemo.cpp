@@ -14,9 +14,9 @@
 
 #include "app/panels/demos/DemoText.h"
 #include "app/panels/demos/LectureDemos.h"
+#include "app/ui/WrappedText.h"
 #include "radiometry/solidangle/ClosedFormSolidAngles.h"
 #include "radiometry/solidangle/PolygonSolidAngle.h"
-#include "app/ui/WrappedText.h"
 
 namespace radiant::app {
 namespace {

@@ -8,8 +8,8 @@
 
 #include "app/panels/demos/DemoText.h"
 #include "app/panels/demos/LectureDemos.h"
-#include "radiometry/sources/SunExample.h"
 #include "app/ui/WrappedText.h"
+#include "radiometry/sources/SunExample.h"
 
 namespace radiant::app {
 namespace {
