@@ -166,14 +166,13 @@ private:
     };
     /// Links grouped by receiver (HierarchicalGather.cpp).
     void indexLinksByReceiver();
-    /// Appends kernel(q) x visibility for every link of `leaf` and its ancestors (`everyLink`: also
-    /// those whose rays found them hidden), q each link's source or, where that is large for its
-    /// distance from `x`, its descendants (expandSource). `faces(q)`: whether the receiving point or
-    /// patch may see any of q's front (a cheap test before the kernel); `kernel(source, q)`: the weighted
-    /// form factor from the point or patch to q.
-    template <class Faces, class Kernel, class Visibility>
-    void gatherTerms(ElementIndex leaf, const glm::dvec3& x, Faces&& faces, Kernel&& kernel, Visibility&& visibility,
-                     bool everyLink, std::vector<GatherTerm>& out) const;
+    /// Calls expand(link) for every link of `leaf` and its ancestors (`everyLink`: also those whose
+    /// rays found them hidden) that may light x: expand appends the link's terms, kernel(q) x
+    /// visibility, q the link's source or, where that is large for its distance from `x`, its
+    /// descendants (expandSource, expandSourceScaled). `faces(q)`: whether the receiving point or
+    /// patch may see any of q's front (a cheap test before the kernel).
+    template <class Faces, class Expand>
+    void gatherTerms(ElementIndex leaf, const glm::dvec3& x, Faces&& faces, Expand&& expand, bool everyLink) const;
     /// Appends kernel(source) x visibility(link, source, its polygon), or the same for the source's
     /// children where it is large for its distance from x (area over squared distance above
     /// kSourceExpansion).
@@ -181,6 +180,14 @@ private:
     void expandSource(std::uint32_t link, ElementIndex source, const glm::dvec3& x, Kernel& kernel, Visibility& visibility,
                       std::vector<GatherTerm>& out) const;
     static constexpr double kSourceExpansion = 0.05;
+    /// expandSource for a patch's row, with the same terms: those within sqrt(farDistance2) of x take
+    /// kernel(term) (the kernel averaged over the patch's points); the farther ones share what
+    /// kernel(the link's whole source) leaves after the nearer terms, in proportion to estimate(term)
+    /// (the kernel at one point): exact in sum, one point per far term instead of four.
+    template <class Kernel, class Estimate, class Visibility>
+    void expandSourceScaled(std::uint32_t link, const glm::dvec3& x, double farDistance2, Kernel& kernel, Estimate& estimate,
+                            Visibility& visibility, std::vector<ElementIndex>& terms, std::vector<double>& values,
+                            std::vector<GatherTerm>& out) const;
     /// sourceRules_ for every element (kept from the leaf rows to the patch rows of the same step).
     void buildSourceRules();
     /// Each patch's gather row, rebuilt when refinement changed the links.

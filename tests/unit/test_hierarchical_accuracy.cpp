@@ -273,6 +273,47 @@ TEST_CASE("hierarchical penumbra: every patch across a penumbra near its closed-
     }
 }
 
+TEST_CASE("hierarchical patch rows: terms scaled from one point keep every patch's closed-form irradiance") {
+    // A black unit-square lamp under a parallel unit-square receiver 0.3 m above: B = rho F(patch ->
+    // lamp) exactly, the corner-rectangle formula averaged over each patch. The lamp's links are read
+    // through its elements, most of them far from the patch, whose kernels the rows take at the patch's
+    // centroid and scale to the whole lamp's kernel over the patch's four points. Unscaled, the
+    // centroid's kernels left the patches 0.073% off on average and 0.25% at worst; scaled 0.004% and
+    // 0.007%.
+    const double rho = 0.5, h = 0.3;
+    Scene scene;
+    scene.name = "lamp under a receiver";
+    scene.materials = {{"lamp", Rgb(0.0), ExitanceRgb(Rgb(1.0))}, {"receiver", Rgb(rho), ExitanceRgb{}}};
+    scene.surfaces.push_back({"lower", 0, {quadFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}, "test"});
+    scene.surfaces.push_back({"upper", 1, {quadFace({{0, 0, h}, {0, 1, h}, {1, 1, h}, {1, 0, h}})}, "test"});
+    const PatchMesh mesh = meshed(scene, 0.01);
+    // Leaves of 0.01 m^2 everywhere: the lamp's links are read through its elements.
+    HierarchicalSolver solver(scene, mesh, SolverOptions{}, nullptr, HierarchicalRefinement{0.01});
+    for (int k = 0; k < 100 && solver.step().residual > 1e-6; ++k) {
+    }
+    double mean = 0, worst = 0;
+    int patches = 0;
+    for (std::uint32_t i = mesh.surfaceFirstPatch[1]; i < mesh.surfaceFirstPatch[2]; ++i) {
+        const PatchPolygon polygon = mesh.polygon(i);
+        double exact = 0;
+        constexpr int kSide = 12;
+        for (int a = 0; a < kSide; ++a)
+            for (int b = 0; b < kSide; ++b) {
+                const glm::dvec3 x = hierarchical::pointOn(polygon, (a + 0.5) / kSide, (b + 0.5) / kSide);
+                exact += rho * radiant::test::overRectangle(radiant::test::pointToCornerRectangle, -x.x, 1 - x.x, -x.y, 1 - x.y, h);
+            }
+        exact /= kSide * kSide;
+        const double off = std::abs(solver.solution()[i].x / exact - 1);
+        mean += off;
+        worst = std::max(worst, off);
+        ++patches;
+    }
+    mean /= patches;
+    MESSAGE(patches << " patches: mean " << mean << ", worst " << worst);
+    CHECK(mean < 2e-4);
+    CHECK(worst < 5e-4);
+}
+
 namespace {
 
 /// Whether the segment a-b meets the triangle (p0, p1, p2) (Moller-Trumbore), ends excluded.
