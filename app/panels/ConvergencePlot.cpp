@@ -244,9 +244,7 @@ void ConvergencePlot::drawExport(const Snapshot& snapshot) {
         }
     }
     if (!exportMessage_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, exportFailed_ ? theme::kErrorRed : theme::kDoneGreen);
-        ui::wrappedTextUnformatted(exportMessage_);
-        ImGui::PopStyleColor();
+        ui::wrappedTextColoured(exportFailed_ ? theme::kErrorRed : theme::kDoneGreen, exportMessage_);
     }
 }
 

@@ -72,9 +72,7 @@ void LessonsPanel::draw() {
     ImGui::SameLine();
     if ((ImGui::Button("Open") || entered) && path_[0] != '\0') error_ = open_(path_.data());
     if (!error_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedTextUnformatted(error_);
-        ImGui::PopStyleColor();
+        ui::wrappedTextColoured(theme::kErrorRed, error_);
     }
 }
 

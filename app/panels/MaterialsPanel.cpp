@@ -169,9 +169,7 @@ void MaterialsPanel::drawEditor(const Scene& scene) {
     // Once the field is let go the panel follows the snapshot again (it holds what was applied).
     if (committed && refusal_.empty()) editing_ = false;
     if (!refusal_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        ui::wrappedTextUnformatted(refusal_);
-        ImGui::PopStyleColor();
+        ui::wrappedTextColoured(theme::kWarningAmber, refusal_);
         if (ImGui::SmallButton("Revert")) {
             editing_ = false;
             refusal_.clear();

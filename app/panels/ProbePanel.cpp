@@ -199,9 +199,7 @@ void ProbePanel::draw() {
         ImGui::TextDisabled("measuring...");
     }
     if (!error_.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedTextUnformatted(error_);
-        ImGui::PopStyleColor();
+        ui::wrappedTextColoured(theme::kErrorRed, error_);
     }
     drawTarget(scene);
     if (reading_ && reading_->target) {
@@ -343,9 +341,7 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
                           "It converges to the exact answer, so 'solver vs path-traced' is the error of the method,\n"
                           "mesh and convergence you chose. +- is one standard error of the path tracer's estimate.");
     if (!state.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedTextUnformatted(state.error);
-        ImGui::PopStyleColor();
+        ui::wrappedTextColoured(theme::kErrorRed, state.error);
         return;
     }
     if (!state.estimate) {

@@ -105,16 +105,10 @@ void ScenePanel::draw() {
     }
     // A failed load, and a failed re-mesh (over the patch budget), both keep the previous scene.
     for (const std::string* message : {static_cast<const std::string*>(&error_), &snapshot.error})
-        if (!message->empty()) {
-            ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-            ui::wrappedTextUnformatted(*message);
-            ImGui::PopStyleColor();
-        }
+        if (!message->empty()) ui::wrappedTextColoured(theme::kErrorRed, *message);
     // The loader's warnings travel with the scene, so they show however it was opened.
     if (snapshot.scene && !snapshot.scene->warnings.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kWarningAmber);
-        for (const std::string& warning : snapshot.scene->warnings) ui::wrappedTextUnformatted(warning);
-        ImGui::PopStyleColor();
+        for (const std::string& warning : snapshot.scene->warnings) ui::wrappedTextColoured(theme::kWarningAmber, warning);
     }
 }
 

@@ -173,11 +173,7 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
                               stats.linksRefined, removed);
     }
     row("Step time", "%.3f ms", stats.seconds * 1e3);
-    if (!snapshot.error.empty()) {
-        ImGui::PushStyleColor(ImGuiCol_Text, theme::kErrorRed);
-        ui::wrappedTextUnformatted(snapshot.error);
-        ImGui::PopStyleColor();
-    }
+    if (!snapshot.error.empty()) ui::wrappedTextColoured(theme::kErrorRed, snapshot.error);
 }
 
 void SolverPanel::drawStepTimes(const Snapshot& snapshot) {

@@ -136,14 +136,18 @@ void wrappedText(const char* format, ...) {
     wrappedTextUnformatted(text);
 }
 
+void wrappedTextColoured(const ImVec4& colour, std::string_view text) {
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    wrappedTextUnformatted(text);
+    ImGui::PopStyleColor();
+}
+
 void wrappedTextDisabled(const char* format, ...) {
     std::va_list arguments;
     va_start(arguments, format);
     const std::string text = formatted(format, arguments);
     va_end(arguments);
-    ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-    wrappedTextUnformatted(text);
-    ImGui::PopStyleColor();
+    wrappedTextColoured(ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled), text);
 }
 
 } // namespace radiant::app::ui

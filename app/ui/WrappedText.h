@@ -3,6 +3,8 @@
 // after a comma or a full stop inside a word, which splits the thousands of "2,335 groups" over two
 // lines and "0.25" after its point; a reader of a projected panel takes "2," and "335" for two numbers.
 #include <functional>
+#include <imgui.h>
+
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,5 +32,8 @@ void wrappedTextDisabled(const char* format, ...);
 
 /// `text` as it is, wrapped as wrappedText does.
 void wrappedTextUnformatted(std::string_view text);
+
+/// wrappedTextUnformatted in `colour` (an error's red, a warning's amber).
+void wrappedTextColoured(const ImVec4& colour, std::string_view text);
 
 } // namespace radiant::app::ui

@@ -107,6 +107,14 @@ constexpr double kFarTermDistanceSquaredOverArea = 4;
 
 double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
 
+/// Whether a gather at x reads `source` through its children: area over squared distance above
+/// `expansion` (HierarchicalSolver::kSourceExpansion; expandSource says why).
+bool readThroughChildren(const ElementTree& tree, ElementIndex source, const glm::dvec3& x, double expansion) {
+    const PatchPolygon& q = tree.polygon(source);
+    const glm::dvec3 d = q.centroid - x;
+    return !tree.isLeaf(source) && q.area > expansion * glm::dot(d, d);
+}
+
 } // namespace
 
 template <class Faces, class Expand>
@@ -138,13 +146,12 @@ void HierarchicalSolver::expandSource(std::uint32_t link, ElementIndex source, c
     // product's mean is not the means' product. So does its visibility, and with the radiosity: the
     // floor a block hides from the ceiling is the floor in the block's shadow, so one visible share
     // for the whole source, times its children's radiosities, made the ceiling 0.8% dark.
-    const PatchPolygon& q = tree_.polygon(source);
-    const glm::dvec3 d = q.centroid - x;
-    if (!tree_.isLeaf(source) && q.area > kSourceExpansion * glm::dot(d, d)) {
+    if (readThroughChildren(tree_, source, x, kSourceExpansion)) {
         const ElementIndex first = tree_.firstChild(source);
         for (ElementIndex c = first; c < first + ElementTree::kChildCount; ++c) expandSource(link, c, x, kernel, visibility, out);
         return;
     }
+    const PatchPolygon& q = tree_.polygon(source);
     const double f = kernel(source, q);
     if (f <= 0) return;
     const double v = visibility(link, source, q);
@@ -159,9 +166,7 @@ void HierarchicalSolver::expandSourceScaled(std::uint32_t link, const glm::dvec3
     const ElementIndex root = links_[link].source;
     terms.clear();
     const auto collect = [&](const auto& self, ElementIndex source) -> void {
-        const PatchPolygon& q = tree_.polygon(source);
-        const glm::dvec3 d = q.centroid - x;
-        if (!tree_.isLeaf(source) && q.area > kSourceExpansion * glm::dot(d, d)) {
+        if (readThroughChildren(tree_, source, x, kSourceExpansion)) {
             for (ElementIndex c = tree_.firstChild(source); c < tree_.firstChild(source) + ElementTree::kChildCount; ++c) self(self, c);
             return;
         }
