@@ -8,28 +8,13 @@
 #include <string>
 
 #include "app/SnapshotToRenderer.h"
-#include "app/solver/ConvergenceQuantity.h"
+#include "app/solver/SolveProgress.h"
 #include "app/ui/ComparisonColours.h"
 #include "app/ui/LegendOverlay.h"
 #include "render/GlContext.h"
 
 namespace radiant::app {
 namespace {
-
-/// What a side's label says under its name: where its solve stands.
-std::string progressLine(const Snapshot& s) {
-    if (!s.error.empty()) return s.error;
-    if (!s.mesh) return "meshing";
-    if (s.solverBuilds == 0) return "computing form factors";
-    char text[96];
-    if (s.stats.iteration == 0) return s.running ? "starting" : "ready (Space runs both)";
-    const bool converged = !s.running && s.stats.residual < s.tolerance;
-    // Each method's own measure by name, as the status line and the plot's axis say it.
-    std::snprintf(text, sizeof text, "iteration %zu, %s %.1e%s", s.stats.iteration,
-                  std::string(convergenceQuantity(s.method).name).c_str(), s.stats.residual,
-                  converged ? ", converged" : "");
-    return text;
-}
 
 /// A label box in the top-left corner of `view` (UI units): a title in `colour`, a line under it.
 /// `room`: the share of the view's width it may take (the difference view's legend stands at the right).
@@ -172,8 +157,8 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
     const std::string labelB = comparisonLabel('B', b.method, settings.patchAreaScale);
     if (settings.view == ComparisonView::SideBySide) {
         const std::vector<render::Viewport> halves = split(viewInUiUnits);
-        drawLabel(halves[0], theme::kSideA, labelA, progressLine(a));
-        drawLabel(halves[1], theme::kSideB, labelB, progressLine(b));
+        drawLabel(halves[0], theme::kSideA, labelA, progressLine(a, longWorkDone(live_.thread)));
+        drawLabel(halves[1], theme::kSideB, labelB, progressLine(b, longWorkDone(*live_.second)));
         const auto x = static_cast<float>(halves[1].x);
         ImGui::GetBackgroundDrawList()->AddLine({x, static_cast<float>(viewInUiUnits.y)},
                                                 {x, static_cast<float>(viewInUiUnits.y + viewInUiUnits.height)},
@@ -186,8 +171,8 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
         std::snprintf(line, sizeof line, "mean %.3g%%, largest %.3g%%\non %s's mesh (%zu patches)", 100 * d.meanRelative,
                       100 * d.maxRelative, d.onFirst ? "A" : "B", d.mesh->size());
     else
-        std::snprintf(line, sizeof line, "waiting for both to step (A: %s; B: %s)", progressLine(a).c_str(),
-                      progressLine(b).c_str());
+        std::snprintf(line, sizeof line, "waiting for both to step (A: %s; B: %s)",
+                      progressLine(a, longWorkDone(live_.thread)).c_str(), progressLine(b, longWorkDone(*live_.second)).c_str());
     drawLabel(viewInUiUnits, IM_COL32(235, 235, 235, 255), "Difference |B_A - B_B| / B",
               labelA + "  vs  " + labelB + "\n" + line, 0.6f);
     render::ColourLegend difference = render::makeLegend(kDifferenceTop, true, render::DisplaySettings::kLogDecades);

@@ -10,6 +10,7 @@
 
 #include "app/cli/ProbeCommandLine.h"
 #include "app/solver/SolutionDifference.h"
+#include "app/solver/SolveProgress.h"
 #include "app/solver/ThreadPriority.h"
 #include "app/ui/Colours.h"
 #include "app/ui/ComparisonColours.h"
@@ -168,7 +169,8 @@ void ProbePanel::startMeasuring(std::chrono::steady_clock::time_point now) {
             measured.error = e.what();
         }
         // B's mesh may be another: the same point, located on it (its gather is the same rule's).
-        if (second && second->scene && second->mesh && !second->radiosity.empty()) {
+        // Before B's first step its radiosity is only the initial guess: nothing to read yet.
+        if (second && hasStepped(*second)) {
             measured.secondGeneration = second->generation;
             try {
                 const Probe probe(*second->scene, *second->mesh, second->rays.get());
@@ -271,11 +273,11 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
     }
-    if (secondReading_) drawComparison(reading, *secondReading_);
+    if (live_.secondCurrent) drawComparison(reading, *live_.secondCurrent);
     drawPathTraced(reading);
 }
 
-void ProbePanel::drawComparison(const ProbeReading& a, const ProbeReading& b) {
+void ProbePanel::drawComparison(const ProbeReading& a, const Snapshot& secondSnapshot) {
     ImGui::Spacing();
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme::kSideA), "A");
     ImGui::SameLine(0, 0);
@@ -284,6 +286,18 @@ void ProbePanel::drawComparison(const ProbeReading& a, const ProbeReading& b) {
     ImGui::TextColored(ImGui::ColorConvertU32ToFloat4(theme::kSideB), "B");
     ImGui::SameLine(0, 0);
     ImGui::TextDisabled(" at this point (comparison)");
+    const Snapshot& firstSnapshot = live_.snapshot();
+    if (!hasStepped(firstSnapshot) || !hasStepped(secondSnapshot) || !secondReading_) {
+        // Either side's radiosity before its first step is its initial guess, not a solution.
+        if (hasStepped(firstSnapshot) && hasStepped(secondSnapshot))
+            ImGui::TextDisabled("reading B here...");
+        else
+            ui::wrappedTextDisabled(
+                "waiting for both to step (A: %s; B: %s)", progressLine(firstSnapshot, longWorkDone(live_.thread)).c_str(),
+                progressLine(secondSnapshot, live_.second ? longWorkDone(*live_.second) : std::nullopt).c_str());
+        return;
+    }
+    const ProbeReading& b = *secondReading_;
     row("A: B of patch", "W/m\xC2\xB2", a.patchRadiosity.value());
     row("B: B of patch", "W/m\xC2\xB2", b.patchRadiosity.value());
     scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.patchRadiosity.value(), b.patchRadiosity.value()));

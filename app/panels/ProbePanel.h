@@ -84,7 +84,8 @@ private:
     void drawPathTraced(const ProbeReading& reading);
     void drawCopyCommand();
     /// Comparison mode: A's and B's values at the point and how far apart they are.
-    void drawComparison(const ProbeReading& a, const ProbeReading& b);
+    /// A's and B's values at the point and their differences, or why there are none yet.
+    void drawComparison(const ProbeReading& a, const Snapshot& secondSnapshot);
     /// B's snapshot generation, or 0 with the comparison off.
     [[nodiscard]] std::uint64_t secondGeneration() const;
     /// Starts the path tracer at the pick, or restarts it when the materials changed under it.

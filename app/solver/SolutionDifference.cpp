@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "app/solver/SolveProgress.h"
 #include "radiometry/mesh/PatchLocator.h"
 
 namespace radiant::app {
@@ -47,10 +48,7 @@ const SolutionDifference& SolutionDifferencer::update(const Snapshot& a, const S
     generationB_ = b.generation;
     // Before its first step a side shows its emission alone (while its form factors compute, say):
     // no solution to set against the other's yet.
-    const bool ready = a.mesh && b.mesh && a.scene && a.radiosity.size() == a.mesh->size() &&
-                       b.radiosity.size() == b.mesh->size() && !a.radiosity.empty() && !b.radiosity.empty() &&
-                       !a.history.empty() && !b.history.empty();
-    if (!ready) {
+    if (!hasStepped(a) || !hasStepped(b)) {
         difference_.mesh.reset();
         difference_.relative.clear();
         ++difference_.generation;

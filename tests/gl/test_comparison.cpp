@@ -177,6 +177,33 @@ TEST_CASE("comparison mode: Jacobi and Gauss-Seidel on two meshes of the furnace
     CHECK(lab.sceneViews().size() == 1);
 }
 
+TEST_CASE("comparison mode: the probe reads B only once B has stepped, not its initial guess while it is ready or "
+          "computing form factors") {
+    requireDisplay();
+    Lab lab(options("furnace", 0.1));
+    lab.send(command::SetMethod{SolverMethod::Jacobi});
+    ComparisonSettings settings;
+    settings.method = SolverMethod::GaussSeidel;
+    lab.setComparison(settings);
+    lab.compare(true);
+    REQUIRE(lab.secondSnapshot());
+    const auto ready = [](const std::shared_ptr<const app::Snapshot>& s) { return s && s->mesh && s->solverBuilds > 0; };
+    frameUntil(lab, [&] { return ready(lab.snapshot()) && ready(lab.secondSnapshot()); }, "both solvers built");
+    REQUIRE(lab.secondSnapshot()->history.empty());  // not run: B holds its initial guess only
+    REQUIRE(lab.clickAt({400.0, 250.0}));
+    frameUntil(lab, [&] { return lab.probeReading() && lab.probeGeneration() == lab.snapshot()->generation; }, "A's reading");
+    for (int frame = 0; frame < 5; ++frame) lab.frame();
+    CHECK_FALSE(lab.secondProbeReading());  // the Probe panel says "waiting for both to step" instead
+
+    lab.send(command::Step{});
+    frameUntil(lab, [&] { return lab.secondProbeReading().has_value(); }, "B's reading after its first step");
+    const std::shared_ptr<const app::Snapshot> b = lab.secondSnapshot();
+    REQUIRE(!b->history.empty());
+    // One Gauss-Seidel sweep in the furnace already adds reflected light to the emission.
+    const Material& wall = b->scene->materials.at(0);
+    CHECK(lab.secondProbeReading()->patchRadiosity.value().x > 1.2 * wall.exitance.value().x);
+}
+
 TEST_CASE("comparison mode: Jacobi and Gauss-Seidel converged on one mesh of the Cornell box draw the same picture in both halves") {
     requireDisplay();
     LabOptions o = options("cornell-box", 0.05);
