@@ -196,7 +196,8 @@ private:
     /// down: a leaf the patches resolve (their Gauss points inside it, kPatchOverLeaf) reads the
     /// patch rows at those points (leafPoints_); any other leaf gets a gather row of its own, every
     /// link of the leaf and its ancestors with the form factor from the leaf itself. Builds the patch
-    /// rows first. Rebuilt when refinement changed the links.
+    /// rows too (after the own rows, which share their source rules). Rebuilt when refinement changed
+    /// the links.
     void buildLeafRows();
     /// leafIrradiance_ from the patch and leaf rows and the current radiosity (both cores).
     void gatherLeafRows();
