@@ -473,7 +473,34 @@ Rgb HierarchicalSolver::radiosityAt(std::uint32_t surface, std::uint32_t face, c
 
 void HierarchicalSolver::buildLeafRows() {
     const std::size_t n = tree_.size();
-    buildSourceRules();  // kept for the patch rows, built next
+    buildSourceRules();  // kept for the patch rows, built last
+    // A leaf reads the patch rows where the patches resolve it: their rows already gather each patch's
+    // terms with its own kernel and visibility (per-term rays for the lamp's pieces and partial links,
+    // which a leaf's own row takes from its links' shares), and built from the leaf itself they were
+    // a second set of kernels and rays for the same surface (a fifth of the Cornell box's solve).
+    // Patches and elements are cut independently, so most patches straddle leaves: each leaf takes its
+    // patches' values at the Gauss points inside it (gatherLeafRows).
+    // A patch much larger than the leaf would hand it the patch's mean, its variation across the
+    // patch only as far as the links' pushed values carry it (gatherLeafRows): such a leaf keeps its
+    // own row (the furnace meshed at 0.1 m^2 with 1,536 leaves: with patches up to 4x the leaf read,
+    // every leaf within 0.13% of E / (1 - rho); with patches up to 16x, 3.2%).
+    const auto resolves = [&](double patchArea, ElementIndex leaf) { return patchArea <= kPatchOverLeaf * tree_.area(leaf); };
+    leafPoints_.clear();
+    std::vector<double> resolvedArea(n, 0.0);
+    for (std::size_t p = 0; p < patches_.size(); ++p) {
+        const PatchSample& patch = patches_[p];
+        if (patch.polygon.count < 3) continue;
+        hierarchical::forGaussPoints(patch.polygon, 3, [&](const glm::dvec3& x, double weight) {
+            const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
+            if (leaf == kNoElement) return;
+            leafPoints_.push_back({leaf, static_cast<std::uint32_t>(p), static_cast<float>(weight * patch.area), 0.0f});
+            if (resolves(patch.area, leaf)) resolvedArea[leaf] += weight * patch.area;
+        });
+    }
+    leafFromPatches_.assign(n, 0);
+    for (std::size_t e = 0; e < n; ++e) leafFromPatches_[e] = resolvedArea[e] > 0 ? 1 : 0;
+    for (LeafPoint& point : leafPoints_)
+        if (resolves(patches_[point.patch].area, point.leaf)) point.share = static_cast<float>(point.area / resolvedArea[point.leaf]);
     std::vector<std::vector<GatherTerm>> rows(n);
     struct Term {
         ElementIndex source;
@@ -483,7 +510,7 @@ void HierarchicalSolver::buildLeafRows() {
         std::vector<Term> terms;
         for (std::size_t i = from; i < to; ++i) {
             const auto leaf = static_cast<ElementIndex>(i);
-            if (!tree_.isLeaf(leaf)) continue;
+            if (!tree_.isLeaf(leaf) || leafFromPatches_[leaf]) continue;
             const PatchPolygon& p = tree_.polygon(leaf);
             std::vector<GatherTerm>& row = rows[i];
             const double leafIrradiance = leaf < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[leaf]) : 0.0;
@@ -549,19 +576,54 @@ void HierarchicalSolver::buildLeafRows() {
     leafRows_.reserve(leafRowBegin_.back());
     for (const auto& row : rows) leafRows_.insert(leafRows_.end(), row.begin(), row.end());
     leafIrradiance_.assign(n, Rgb(0.0));
+    if (!patchRowsCurrent_) buildPatchRows();
     leafRowsCurrent_ = true;
 }
 
 void HierarchicalSolver::gatherLeafRows() {
     const auto& radiosity = tree_.radiosity();
-    parallelChunks(tree_.size(), threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
+    const std::size_t n = tree_.size();
+    patchIrradiance_.resize(patches_.size());
+    parallelChunks(patches_.size(), threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t p = from; p < to; ++p) {
+            Rgb sum(0.0);
+            for (std::size_t k = patchRowBegin_[p]; k < patchRowBegin_[p + 1]; ++k)
+                sum += static_cast<double>(patchRows_[k].weight) * radiosity[patchRows_[k].source];
+            patchIrradiance_[p] = sum;
+        }
+    });
+    // A patch's row is its mean over the patch, and the leaves it straddles differ (one in a shadow,
+    // one out): each leaf takes its own pushed irradiance (the links' value over it, from the last
+    // push-pull) plus the patches' rows less the pushed irradiance averaged over the same patch, so
+    // that the patch's mean blurs only what the links did not already resolve. Where a leaf holds
+    // whole patches, that is the mean of their rows. (The patches' mean rows alone: the patches'
+    // distance from converged Gauss-Seidel 0.91-0.95% at seeds 1-3 against 0.80-0.85% with this.)
+    const bool pushed = pushedIrradiance_.size() == n;
+    patchPushed_.assign(patches_.size(), Rgb(0.0));
+    if (pushed) {
+        std::vector<double> area(patches_.size(), 0.0);
+        for (const LeafPoint& point : leafPoints_) {
+            patchPushed_[point.patch] += static_cast<double>(point.area) * pushedIrradiance_[point.leaf];
+            area[point.patch] += point.area;
+        }
+        for (std::size_t p = 0; p < patches_.size(); ++p)
+            if (area[p] > 0) patchPushed_[p] /= area[p];
+    }
+    parallelChunks(n, threads(), 1024, [&](std::size_t from, std::size_t to, unsigned) {
         for (std::size_t e = from; e < to; ++e) {
+            if (leafFromPatches_[e]) {
+                leafIrradiance_[e] = pushed ? pushedIrradiance_[e] : Rgb(0.0);
+                continue;
+            }
             Rgb sum(0.0);
             for (std::size_t k = leafRowBegin_[e]; k < leafRowBegin_[e + 1]; ++k)
                 sum += static_cast<double>(leafRows_[k].weight) * radiosity[leafRows_[k].source];
             leafIrradiance_[e] = sum;
         }
     });
+    for (const LeafPoint& point : leafPoints_)
+        if (point.share > 0)
+            leafIrradiance_[point.leaf] += static_cast<double>(point.share) * (patchIrradiance_[point.patch] - patchPushed_[point.patch]);
 }
 
 } // namespace radiant

@@ -400,8 +400,9 @@ IterationStats HierarchicalSolver::step() {
     const bool quiet = settleOnResidual_ && refinedSinceChange_ && stats_.residual < kSettleResidual;
     stats.linksRefined = linksSettled_ || quiet ? 0 : refine();
     if (!linksSettled_ && !quiet) refinedSinceChange_ = true;
-    // The rows cost a form factor per leaf and per link of its chain: they are built once refinement
-    // has settled (a step that made no links), and until then push-pull pushes each link's shape. Once
+    // The rows cost a form factor per patch (and per leaf the patches do not resolve) and per link of
+    // its chain: they are built once refinement has settled (a step that made no links), and until
+    // then push-pull pushes each link's shape. Once
     // built, the links stay until a material or the view changes: the rows move B by up to 1% of the
     // emitted power, the oracle then asked for a few dozen links, which dropped the rows, and the
     // Cornell box's default solve to 1e-4 rebuilt them six times (9 s loaded instead of 1 s).
@@ -459,7 +460,9 @@ std::size_t HierarchicalSolver::bytes() const {
            (receiverLinkBegin_.capacity() + receiverLinks_.capacity()) * sizeof(std::uint32_t) +
            patchRowBegin_.capacity() * sizeof(std::size_t) +
            patchRows_.capacity() * sizeof(GatherTerm) + occluderCorners_.capacity() * sizeof(glm::dvec3) +
-           occluderBegin_.capacity() * sizeof(std::uint32_t) + linkShaft_.capacity();
+           occluderBegin_.capacity() * sizeof(std::uint32_t) + linkShaft_.capacity() +
+           leafPoints_.capacity() * sizeof(LeafPoint) + leafFromPatches_.capacity() +
+           (patchIrradiance_.capacity() + patchPushed_.capacity()) * sizeof(Rgb);
 }
 
 std::size_t HierarchicalSolver::raysCast() const {
