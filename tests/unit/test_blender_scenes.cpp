@@ -28,6 +28,7 @@
 #include "radiometry/solver/Solver.h"
 #include "tests/support/RunRadiant.h"
 #include "tests/support/Common.h"
+#include "tests/support/CatalogViewFactors.h"
 
 using namespace radiant;
 namespace fs = std::filesystem;
@@ -41,12 +42,7 @@ using radiant::test::contains;
 using radiant::test::anyContains;
 
 /// Directly opposed parallel rectangles a x b at distance c (docs/reference.md, Howell).
-double parallelRectangles(double a, double b, double c) {
-    const double X = a / c, Y = b / c;
-    return 2 / (std::numbers::pi * X * Y) *
-           (std::log(std::sqrt((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y))) + X * std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)) +
-            Y * std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) - X * std::atan(X) - Y * std::atan(Y));
-}
+using radiant::test::parallelRectangles;
 
 struct Solved {
     Scene scene;

@@ -19,17 +19,13 @@
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ImportanceSolver.h"
 #include "radiometry/solver/Solver.h"
+#include "tests/support/MeshTopology.h"
 
 using namespace radiant;
 
 namespace {
 
-Face makeFace(std::initializer_list<glm::dvec3> corners) {
-    Face face;
-    face.vertices = corners;
-    face.updateGeometry();
-    return face;
-}
+using radiant::test::makeFace;
 
 /// Turns the face around when its normal does not point towards `inside`.
 Face facing(Face face, const glm::dvec3& inside) {

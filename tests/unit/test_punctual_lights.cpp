@@ -33,6 +33,7 @@
 #include "tests/support/Relative.h"
 #include "tests/support/RunRadiant.h"
 #include "tests/support/Common.h"
+#include "tests/support/CatalogViewFactors.h"
 
 using namespace radiant;
 using radiant::test::relativeTo;
@@ -50,9 +51,7 @@ constexpr double kBulbIntensity = 1.0;
 const glm::dvec3 kBulb{0.5, 2, 0};
 
 /// Solid angle of an a x b rectangle seen from height h above one corner (docs/reference.md).
-double cornerRectangleSolidAngle(double a, double b, double h) {
-    return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h)));
-}
+using radiant::test::cornerRectangleSolidAngle;
 
 /// The room's 4 m x 4 m floor from the bulb: four rectangles meeting below it.
 double floorSolidAngleFromBulb() {
