@@ -58,7 +58,7 @@ namespace {
 
 // Behind the box and the panels alike (app/ui/Theme.h): a dark neutral grey, so no colour competes
 // with the walls' and the box's edges stay visible where they meet the background.
-const glm::vec3 kBackground{kBackdrop.r, kBackdrop.g, kBackdrop.b};
+const glm::vec3 kClearColour{kBackdrop.r, kBackdrop.g, kBackdrop.b};
 
 std::string sceneLabel(const std::string& sceneName) { return std::filesystem::path(sceneName).filename().string(); }
 
@@ -337,7 +337,7 @@ struct Lab::State {
         if (!demo && !comparison->drawOverlays(viewInUiUnits) && display.colourMode == render::ColourMode::FalseColour)
             drawLegendOverlay(patches->legend(), viewInUiUnits);
 
-        render::beginWindowFrame(width, height, viewport, kBackground);
+        render::beginWindowFrame(width, height, viewport, kClearColour);
         if (demo) {
             drawDemoPicture(*demo, *demoRenderer, lastCamera, viewport, pixelRatio, ui->uiScale());
         } else {
@@ -474,7 +474,7 @@ render::ImageRgb8 Lab::frameAndCapture() {
 }
 
 render::ImageRgb8 Lab::renderOffscreen(int width, int height) const {
-    return render::renderOffscreen(*state_->patches, state_->orbit.camera(), width, height, kBackground);
+    return render::renderOffscreen(*state_->patches, state_->orbit.camera(), width, height, kClearColour);
 }
 
 render::Viewport Lab::sceneViewport() const { return state_->viewport; }

@@ -28,10 +28,6 @@ namespace radiant::app {
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 struct AccuracyPoint {
     std::string label;
     ReferencePoint at;
@@ -103,8 +99,6 @@ std::string signedPercent(double fraction) {
     std::snprintf(text, sizeof text, "%+.2f%%", 100 * fraction);
     return text;
 }
-
-std::string percent(double fraction) { return formatNumber(100 * fraction, 2) + "%"; }
 
 } // namespace
 

@@ -60,7 +60,7 @@ double percentile(std::vector<double> samples, double p) {
 
 /// The patch area that meshes the scene into about `target` patches (meshing makes patches near the
 /// limit, so the count scales as area / limit; two corrections absorb the rounding to whole cells).
-double areaForPatchCount(const Scene& scene, std::size_t target) {
+double areaMeshingInto(const Scene& scene, std::size_t target) {
     double area = scene.totalArea() / static_cast<double>(target);
     for (int i = 0; i < 2; ++i)
         area *= static_cast<double>(estimatePatchCount(scene, {area})) / static_cast<double>(target);
@@ -370,7 +370,7 @@ BenchTable benchFrames(const BenchOptions& options) {
     labOptions.height = kHeight;
     labOptions.vsync = false;
     labOptions.runOnStart = false;
-    labOptions.maxPatchArea = areaForPatchCount(loadScene("cornell-box").scene, kTargetPatches);
+    labOptions.maxPatchArea = areaMeshingInto(loadScene("cornell-box").scene, kTargetPatches);
     Lab lab(labOptions);
     lab.send(command::SetTolerance{1e-12});  // keep stepping for the whole measurement
     lab.send(command::SetMethod{SolverMethod::Progressive});

@@ -51,13 +51,11 @@ Measured solveAt(const CornellBoxAsShown& box, double tolerance, int repeats, co
     return m;
 }
 
-struct Peer {
+struct PublishedPeer {
     const char* setting;
     double mean, worst;  ///< against the path tracer; worst < 0: not stated
     double seconds;
 };
-
-std::string percent(double fraction) { return formatNumber(100 * fraction, 2) + "%"; }
 
 } // namespace
 
@@ -113,10 +111,10 @@ BenchTable benchHierarchicalAccuracy(const BenchOptions& options) {
     }
 
     // RenderPark at equal accuracy: Radiant's fastest tolerance at least as accurate as each setting.
-    const std::vector<Peer> peers = {{"RenderPark, default threshold", 0.0048, 0.015, 0.25},
+    const std::vector<PublishedPeer> peers = {{"RenderPark, default threshold", 0.0048, 0.015, 0.25},
                                      {"RenderPark, 10x finer", 0.0029, -1, 1.4},
                                      {"RenderPark, 100x finer", 0.0018, -1, 6.8}};
-    for (const Peer& peer : peers) {
+    for (const PublishedPeer& peer : peers) {
         const Measured* match = nullptr;
         for (const Measured& m : sweep)
             if (m.error.mean <= peer.mean && (peer.worst < 0 || m.error.worst <= peer.worst) &&

@@ -22,7 +22,7 @@ namespace radiant::app {
 
 namespace {
 
-struct Peer {
+struct HierarchicalPeer {
     const char* name;
     const char* figure;     ///< as the issue states it
     std::size_t elements;
@@ -140,7 +140,7 @@ BenchTable benchHierarchicalPeers(const BenchOptions& options) {
     double loadAtStart = -1;
     getloadavg(&loadAtStart, 1);
 
-    const std::vector<Peer> peers = {
+    const std::vector<HierarchicalPeer> peers = {
         {"RenderPark", "5.4k elements, 42k links, 0.3-0.5 s", 5'400, 42'000, 0.3, 0.5},
         {"SPLASH-2", "25k elements, 1.3M interactions, 6.3 s (2 threads)", 25'000, 1'300'000, 6.3, 6.3},
     };
@@ -177,7 +177,7 @@ BenchTable benchHierarchicalPeers(const BenchOptions& options) {
     std::vector<std::vector<std::string>> defaultRows;
     std::string leafCounts;
     bool leavesReachPeers = true;
-    for (const Peer& peer : peers) {
+    for (const HierarchicalPeer& peer : peers) {
         const double defaultEpsilon = hierarchicalSetupForElements(scene, peer.elements).options.linkEpsilon;
         const Run firstAtDefault = solveCornell(scene, mesh, peer.elements, 1, reference.surfaceMeans);
         const Search search = searchLinkScale(scene, mesh, peer.elements, peer.links, firstAtDefault, reference.surfaceMeans);

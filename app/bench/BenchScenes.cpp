@@ -7,13 +7,6 @@
 #include "radiometry/scene/SceneLibrary.h"
 
 namespace radiant::app {
-namespace {
-
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
-} // namespace
 
 BenchTable benchScenes(const BenchOptions& options) {
     BenchTable table;

@@ -19,10 +19,6 @@ namespace radiant::app {
 
 namespace {
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-}
-
 /// The process's peak resident memory (VmHWM), MB; 0 where /proc is not available.
 double peakResidentMegabytes() {
     std::ifstream status("/proc/self/status");
@@ -55,7 +51,7 @@ std::string crossingCell(const Crossing& c, double budget) {
 }
 
 /// Largest patch area giving about `patches` patches on this scene.
-double areaForPatchCount(const Scene& scene, std::size_t patches) {
+double areaPerPatch(const Scene& scene, std::size_t patches) {
     return scene.totalArea() / static_cast<double>(patches);
 }
 
@@ -87,7 +83,7 @@ BenchTable benchSolvers(const BenchOptions& options) {
     };
     for (const std::size_t target : targets) {
         MeshingOptions meshing;
-        meshing.maxPatchArea = areaForPatchCount(scene, target);
+        meshing.maxPatchArea = areaPerPatch(scene, target);
         const PatchMesh mesh = meshScene(scene, meshing);
         for (const SolverMethodInfo& info : solverMethods()) {
             const SolverMethod method = info.method;
@@ -109,7 +105,7 @@ BenchTable benchSolvers(const BenchOptions& options) {
         options.quick ? std::vector<std::size_t>{1000, 10000} : std::vector<std::size_t>{1000, 10000, 20000};
     for (const std::size_t target : progressiveTargets) {
         MeshingOptions meshing;
-        meshing.maxPatchArea = areaForPatchCount(scene, target);
+        meshing.maxPatchArea = areaPerPatch(scene, target);
         const PatchMesh mesh = meshScene(scene, meshing);
         const auto setupStart = std::chrono::steady_clock::now();
         auto solver = makeProgressiveSolver(scene, mesh, SolverOptions{}, ProgressiveOptions{});

@@ -49,6 +49,12 @@ std::string formatNumber(double value, int significantDigits) {
     return out.str();
 }
 
+std::string percent(double fraction) { return formatNumber(100 * fraction, 2) + "%"; }
+
+double secondsSince(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
 std::string timeVerdict(double seconds, double targetSeconds) {
     if (seconds <= targetSeconds) return "met";
     return "missed by " + formatNumber(seconds - targetSeconds) + " s (" + formatNumber(seconds / targetSeconds) + "x)";

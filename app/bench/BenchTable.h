@@ -1,6 +1,7 @@
 #pragma once
 // `radiant bench` prints tables. Each part of the system contributes its own table from its own
 // file; timings are medians over repeats, printed with their units.
+#include <chrono>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,10 @@ struct BenchTable {
 double median(std::vector<double> samples);
 /// "12.3" with a fixed number of significant digits.
 std::string formatNumber(double value, int significantDigits = 3);
+/// "12.35%" for 0.12345.
+std::string percent(double fraction);
+/// Wall seconds from `start` to now.
+double secondsSince(std::chrono::steady_clock::time_point start);
 /// "met" when `seconds` is within `targetSeconds`, else by how much and how many times it is missed.
 std::string timeVerdict(double seconds, double targetSeconds);
 

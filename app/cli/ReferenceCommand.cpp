@@ -43,7 +43,7 @@ std::string formatValue(double value) {
     return out.str();
 }
 
-nlohmann::ordered_json rgbJson(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
+nlohmann::ordered_json rgbArray(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 int runReference(const ReferenceCommandOptions& options) {
     const bool timed = options.timed;
@@ -74,15 +74,15 @@ int runReference(const ReferenceCommandOptions& options) {
     nlohmann::ordered_json out;
     out["scene"] = scene.name;
     out["surface"] = scene.surfaces[at.surface].name;
-    out["point"] = rgbJson(at.point);
-    out["normal"] = rgbJson(at.normal);
-    out["radiosity_W_m2"] = rgbJson(estimate.radiosity.value());
-    out["irradiance_W_m2"] = rgbJson(estimate.irradiance.value());
-    out["standard_error_W_m2"] = {{"radiosity_W_m2", rgbJson(estimate.radiosityStandardError)},
-                                  {"irradiance_W_m2", rgbJson(estimate.irradianceStandardError)}};
+    out["point"] = rgbArray(at.point);
+    out["normal"] = rgbArray(at.normal);
+    out["radiosity_W_m2"] = rgbArray(estimate.radiosity.value());
+    out["irradiance_W_m2"] = rgbArray(estimate.irradiance.value());
+    out["standard_error_W_m2"] = {{"radiosity_W_m2", rgbArray(estimate.radiosityStandardError)},
+                                  {"irradiance_W_m2", rgbArray(estimate.irradianceStandardError)}};
     out["samples"] = estimate.samples;
-    out["reflectance"] = rgbJson(estimate.reflectance);
-    out["exitance_W_m2"] = rgbJson(estimate.exitance.value());
+    out["reflectance"] = rgbArray(estimate.reflectance);
+    out["exitance_W_m2"] = rgbArray(estimate.exitance.value());
     out["seed"] = options.seed;
     out["seconds"] = seconds;
 

@@ -50,7 +50,7 @@ struct RenderOptions {
 };
 
 // The lab's background: a dark neutral grey that no wall colour competes with.
-const glm::vec3 kBackground{0.075f, 0.08f, 0.09f};
+const glm::vec3 kRenderBackground{0.075f, 0.08f, 0.09f};
 
 /// --camera: the scene's camera of that name, else of that index (names win: "1" may be a name).
 render::Camera sceneCamera(const Scene& scene, const std::string& wanted) {
@@ -134,7 +134,7 @@ int runRender(const RenderOptions& options) {
     settings.highlightShooter = false;
     renderer.setSettings(settings);
     renderer.prepare();
-    render::ImageRgb8 image = render::renderOffscreen(renderer, camera, options.width, options.height, kBackground);
+    render::ImageRgb8 image = render::renderOffscreen(renderer, camera, options.width, options.height, kRenderBackground);
     // A false-colour figure means nothing without its scale: the legend goes into the picture.
     if (options.falseColour) render::paintLegend(image, renderer.legend());
     render::writePng(image, options.png);

@@ -15,6 +15,7 @@
 
 #include "app/cli/CommandLine.h"
 #include "app/cli/ViewArguments.h"
+#include "app/solver/ConvergenceCsv.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -41,7 +42,7 @@ struct SolveOptions {
     GroupingFlags grouping;
 };
 
-double secondsSince(std::chrono::steady_clock::time_point start) {
+double elapsedSeconds(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
@@ -67,14 +68,7 @@ private:
     std::jthread printer_;
 };
 
-nlohmann::ordered_json rgbJson(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
-
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) return text;
-    std::string quoted = "\"";
-    for (const char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    return quoted + "\"";
-}
+nlohmann::ordered_json rgbOrderedJson(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 void checkPositive(double value, const char* option) {
     if (!(value > 0)) throw RadiantError({"", option}, "must be > 0, got " + std::to_string(value));
@@ -93,7 +87,7 @@ int runSolve(const SolveOptions& options) {
     const SolverMethod method = choice.method;
     const PatchMesh& mesh = system.mesh;
     const std::shared_ptr<const PatchGroups>& groups = system.groups;
-    const double meshSeconds = secondsSince(meshStart);
+    const double meshSeconds = elapsedSeconds(meshStart);
 
     const auto formFactorStart = std::chrono::steady_clock::now();
     Progress progress;
@@ -105,12 +99,12 @@ int runSolve(const SolveOptions& options) {
         solverOptions.view = viewFromArguments(options.view, scene);
         solver = makeCommandSolver(scene, system, solverOptions, &progress);
     }
-    const double formFactorSeconds = secondsSince(formFactorStart);
+    const double formFactorSeconds = elapsedSeconds(formFactorStart);
 
     const auto solveStart = std::chrono::steady_clock::now();
     while (solver->lastStats().residual > options.tolerance && solver->lastStats().iteration < options.maxIterations)
         solver->step();
-    const double solveSeconds = secondsSince(solveStart);
+    const double solveSeconds = elapsedSeconds(solveStart);
     const IterationStats& stats = solver->lastStats();
     if (stats.residual > options.tolerance)
         std::fprintf(stderr, "radiant: warning: residual %.3g above the tolerance %.3g after %zu iterations\n",
@@ -132,10 +126,10 @@ int runSolve(const SolveOptions& options) {
                                           {"area_m2", area},
                                           {"patches", patches},
                                           {"unknowns", groups ? groups->surfaceFirstGroup[s + 1] - groups->surfaceFirstGroup[s] : patches},
-                                          {"reflectance", rgbJson(material.reflectance)},
-                                          {"exitance_W_m2", rgbJson(material.exitance.value())},
-                                          {"radiosity_W_m2", rgbJson(radiosity)},
-                                          {"power_W", rgbJson(power)}};
+                                          {"reflectance", rgbOrderedJson(material.reflectance)},
+                                          {"exitance_W_m2", rgbOrderedJson(material.exitance.value())},
+                                          {"radiosity_W_m2", rgbOrderedJson(radiosity)},
+                                          {"power_W", rgbOrderedJson(power)}};
         if (options.photometric) {
             surface["luminous_exitance_lm_m2"] = illuminanceLux(RadiosityRgb(radiosity));
             surface["luminance_cd_m2"] = luminanceCdPerM2(radianceFromRadiosity(RadiosityRgb(radiosity)));

@@ -14,21 +14,21 @@ namespace radiant::app::lesson {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
+using OrderedJson = nlohmann::ordered_json;
 
-Json triple(const Triple& t) { return Json::array({t[0], t[1], t[2]}); }
+OrderedJson triple(const Triple& t) { return OrderedJson::array({t[0], t[1], t[2]}); }
 
 } // namespace
 
 std::string sessionText(const SessionState& state, const std::string& savedAt) {
-    Json actions = Json::array();
+    OrderedJson actions = OrderedJson::array();
     actions.push_back({{"scene", state.scene}});
     actions.push_back({{"max_patch_area_m2", state.maxPatchAreaM2}});
     actions.push_back({{"method", std::string(methodName(state.method))}});
     actions.push_back({{"tolerance", state.tolerance}});
     actions.push_back({{"link_tolerance", state.linkTolerance}});
     for (const SetMaterial& material : state.materials) {
-        Json edit = {{"surface", material.surface}};
+        OrderedJson edit = {{"surface", material.surface}};
         if (material.reflectance) edit["reflectance"] = triple(*material.reflectance);
         if (material.exitanceW_m2) edit["exitance_W_m2"] = triple(*material.exitanceW_m2);
         actions.push_back({{"material", edit}});
@@ -37,7 +37,7 @@ std::string sessionText(const SessionState& state, const std::string& savedAt) {
                         {{"eye", triple(state.camera.eye)},
                          {"target", triple(state.camera.target)},
                          {"fov_deg", state.camera.fieldOfViewDegrees}}}});
-    Json display = Json::object();
+    OrderedJson display = OrderedJson::object();
     if (state.display.colour) display["colour"] = *state.display.colour;
     if (state.display.links) display["links"] = *state.display.links;
     if (state.display.importance) display["importance"] = *state.display.importance;
@@ -57,16 +57,16 @@ std::string sessionText(const SessionState& state, const std::string& savedAt) {
         actions.push_back({{"compare", false}});
     actions.push_back("run");  // the solution is not saved: it is solved again, to the same tolerance
     if (state.probe) {
-        Json probe = {{"point", triple(state.probe->point)}};
+        OrderedJson probe = {{"point", triple(state.probe->point)}};
         if (state.probe->normal) probe["normal"] = triple(*state.probe->normal);
         if (state.probe->target) probe["target"] = *state.probe->target;
         actions.push_back({{"probe", probe}});
     }
-    const Json session = {
+    const OrderedJson session = {
         {"title", "Radiant session"},
         {"session", true},
         {"steps",
-         Json::array({{{"title", "Saved " + savedAt},
+         OrderedJson::array({{{"title", "Saved " + savedAt},
                        {"caption", "The lab as it was saved; the solution is solved again on opening."},
                        {"actions", actions}}})}};
     return session.dump(2) + "\n";

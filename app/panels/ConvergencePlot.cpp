@@ -19,7 +19,7 @@
 namespace radiant::app {
 namespace {
 
-const ImU32 kBackground = IM_COL32(40, 44, 52, 255);
+const ImU32 kPlotBackground = IM_COL32(40, 44, 52, 255);
 const ImU32 kGrid = IM_COL32(70, 74, 86, 255);
 const ImU32 kTickText = IM_COL32(170, 170, 180, 255);
 const ImU32 kTolerance = IM_COL32(235, 235, 235, 200);
@@ -146,7 +146,7 @@ void ConvergencePlot::draw(const Snapshot& snapshot, const Snapshot* second) {
         return ImVec2{lo.x + static_cast<float>(std::clamp(u, 0.0, 1.0)) * (hi.x - lo.x),
                       lo.y - static_cast<float>(std::clamp(v, 0.0, 1.0)) * (lo.y - hi.y)};
     };
-    draw->AddRectFilled({lo.x, hi.y}, {hi.x, lo.y}, kBackground);
+    draw->AddRectFilled({lo.x, hi.y}, {hi.x, lo.y}, kPlotBackground);
     for (const int e : yAxis.tickExponents) {
         const ImVec2 p = toScreen(xLow, std::pow(10.0, e));
         draw->AddLine({lo.x, p.y}, {hi.x, p.y}, kGrid);

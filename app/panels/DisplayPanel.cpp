@@ -13,11 +13,6 @@
 namespace radiant::app {
 namespace {
 
-ImU32 colourU32(const glm::dvec3& srgb) {
-    return ImGui::GetColorU32(ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y),
-                                     static_cast<float>(srgb.z), 1.0f));
-}
-
 void help(const char* text) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", text);
 }

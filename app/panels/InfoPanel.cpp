@@ -10,7 +10,7 @@
 namespace radiant::app {
 namespace {
 
-void row(const char* label, const char* format, auto... values) {
+void infoRow(const char* label, const char* format, auto... values) {
     ui::labelValueRow(label, 6.0f, format, values...);
 }
 
@@ -29,11 +29,11 @@ void control(const char* input, const char* action) {
 
 void InfoPanel::draw() {
     const double frameMs = frames_.medianSeconds() * 1e3;
-    row("Frame", "%.2f ms", frameMs);
+    infoRow("Frame", "%.2f ms", frameMs);
     ImGui::SameLine();
     ImGui::TextDisabled("(median of %zu)", frames_.count());
-    row("Rate", "%.0f FPS", frameMs > 0 ? 1e3 / frameMs : 0.0);
-    row("Context", "OpenGL %d.%d core", gl_.major, gl_.minor);
+    infoRow("Rate", "%.0f FPS", frameMs > 0 ? 1e3 / frameMs : 0.0);
+    infoRow("Context", "OpenGL %d.%d core", gl_.major, gl_.minor);
     if (!fallbackNote_.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(0.95f, 0.75f, 0.35f, 1.0f));
         ui::wrappedTextUnformatted(fallbackNote_);

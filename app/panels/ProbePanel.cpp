@@ -23,7 +23,7 @@ namespace radiant::app {
 
 namespace {
 
-void row(const char* label, const char* unit, const Rgb& v) {
+void rgbRow(const char* label, const char* unit, const Rgb& v) {
     ui::labelValueRow(label, 6.0f, "%.3g  %.3g  %.3g", v.x, v.y, v.z);
     // A unit that does not fit beside the numbers goes below them rather than past the edge.
     ui::sameLineIfFits(ImGui::CalcTextSize(unit).x);
@@ -241,27 +241,27 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     ui::sameLineIfFits(ImGui::CalcTextSize(point).x);
     if (ImGui::GetCursorPosX() < ImGui::GetFontSize() * 6.0f) ImGui::SetCursorPosX(ImGui::GetFontSize() * 6.0f);
     ImGui::TextUnformatted(point);
-    row("Normal", "", reading.normal);
+    rgbRow("Normal", "", reading.normal);
     drawCopyCommand();
     ImGui::Spacing();
     ImGui::TextDisabled("per band: red  green  blue");
-    row("E", "W/m\xC2\xB2", reading.irradiance.value());
+    rgbRow("E", "W/m\xC2\xB2", reading.irradiance.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Irradiance gathered at this point: the solver's patch radiosities seen through Lambert's\n"
                           "exact point-to-polygon form factors, with ray-cast visibility");
-    row("rho", "", material.reflectance);
+    rgbRow("rho", "", material.reflectance);
     // The radiosity equation at this point: what leaves is what is emitted plus what is reflected.
-    row("B = M+rho E", "W/m\xC2\xB2", reading.radiosity.value());
+    rgbRow("B = M+rho E", "W/m\xC2\xB2", reading.radiosity.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Radiosity leaving this point: its exitance M plus rho times the E gathered here\n"
                           "(a final gather of the solution, so shadows inside a patch read right)");
-    row("L = B/pi", "W/(m\xC2\xB2 sr)", reading.radiance.value());
-    row("B drawn", "W/m\xC2\xB2", reading.interpolatedRadiosity.value());
+    rgbRow("L = B/pi", "W/(m\xC2\xB2 sr)", reading.radiance.value());
+    rgbRow("B drawn", "W/m\xC2\xB2", reading.interpolatedRadiosity.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Interpolated from the patches' radiosities at their corners, as the 3D view shows it.\n"
                           "It differs from B = M + rho E by the mesh's discretisation error: a finer mesh\n"
                           "(Scene panel) brings them together.");
-    row("B of patch", "W/m\xC2\xB2", reading.patchRadiosity.value());
+    rgbRow("B of patch", "W/m\xC2\xB2", reading.patchRadiosity.value());
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("The solver's own value for patch %zu, constant over the patch", reading.at.patch);
     if (display_ && display_->photometric) {
@@ -298,14 +298,14 @@ void ProbePanel::drawComparison(const ProbeReading& a, const Snapshot& secondSna
         return;
     }
     const ProbeReading& b = *secondReading_;
-    row("A: B of patch", "W/m\xC2\xB2", a.patchRadiosity.value());
-    row("B: B of patch", "W/m\xC2\xB2", b.patchRadiosity.value());
+    rgbRow("A: B of patch", "W/m\xC2\xB2", a.patchRadiosity.value());
+    rgbRow("B: B of patch", "W/m\xC2\xB2", b.patchRadiosity.value());
     scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.patchRadiosity.value(), b.patchRadiosity.value()));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Relative difference of the two solvers' own values for the patch under the point (R+G+B\n"
                           "totals; the difference view shows this for every patch of the finer mesh)");
-    row("A: M+rho E", "W/m\xC2\xB2", a.radiosity.value());
-    row("B: M+rho E", "W/m\xC2\xB2", b.radiosity.value());
+    rgbRow("A: M+rho E", "W/m\xC2\xB2", a.radiosity.value());
+    rgbRow("B: M+rho E", "W/m\xC2\xB2", b.radiosity.value());
     scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.radiosity.value(), b.radiosity.value()));
 }
 
@@ -369,8 +369,8 @@ void ProbePanel::drawPathTraced(const ProbeReading& reading) {
         ImGui::Text("%s  %s  %s", percentDifference(solver.x, reference.x).c_str(),
                     percentDifference(solver.y, reference.y).c_str(), percentDifference(solver.z, reference.z).c_str());
     };
-    row("B traced", "W/m\xC2\xB2", e.radiosity.value());
-    row("E traced", "W/m\xC2\xB2", e.irradiance.value());
+    rgbRow("B traced", "W/m\xC2\xB2", e.radiosity.value());
+    rgbRow("E traced", "W/m\xC2\xB2", e.irradiance.value());
     ImGui::TextDisabled("solver vs path-traced:");
     differenceRow("B", reading.radiosity.value(), e.radiosity.value());
     differenceRow("E", reading.irradiance.value(), e.irradiance.value());

@@ -17,7 +17,7 @@
 namespace radiant::app {
 namespace {
 
-void row(const char* label, const char* format, auto... values) {
+void sceneRow(const char* label, const char* format, auto... values) {
     ui::labelValueRow(label, 6.0f, format, values...);
 }
 
@@ -57,18 +57,18 @@ void ScenePanel::draw() {
     const Snapshot& snapshot = live_.snapshot();
     if (snapshot.scene) {
         const Scene& scene = *snapshot.scene;
-        row("Scene", "%s", scene.name.c_str());
-        row("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
+        sceneRow("Scene", "%s", scene.name.c_str());
+        sceneRow("Surfaces", "%zu  (%zu faces)", scene.surfaces.size(), scene.faceCount());
         const std::string patches = withThousands(snapshot.mesh ? snapshot.mesh->size() : std::size_t{0});
         if (snapshot.groups)
-            row("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
+            sceneRow("Patches", "%s  (%s groups)", patches.c_str(), withThousands(snapshot.groups->size()).c_str());
         else
-            row("Patches", "%s", patches.c_str());
+            sceneRow("Patches", "%s", patches.c_str());
         // Said where it changes the unknowns; an ungrouped scene says why under the box's tooltip.
         if (snapshot.groups) {
             ui::wrappedTextDisabled("Grouping %s", snapshot.groupingReason.c_str());
         }
-        row("Area", "%.3f m\xC2\xB2", scene.totalArea());
+        sceneRow("Area", "%.3f m\xC2\xB2", scene.totalArea());
         if (const std::size_t twoSided = scene.doubleSidedSurfaceCount(); twoSided > 0)
             ui::wrappedText("%zu double-sided surface%s: each side solved separately", twoSided, twoSided == 1 ? "" : "s");
         if (const std::size_t lights = scene.lights.size(); lights > 0) {

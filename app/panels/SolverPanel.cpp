@@ -18,11 +18,11 @@ namespace {
 bool shoots(SolverMethod method) { return methodInfo(method).traits.shoots; }
 bool links(SolverMethod method) { return methodInfo(method).traits.links; }
 
-void row(const char* label, const char* format, auto... values) {
+void solverRow(const char* label, const char* format, auto... values) {
     ui::labelValueRow(label, 7.0f, format, values...);
 }
 
-double total(const PowerRgb& power) {
+double totalWatts(const PowerRgb& power) {
     const Rgb& p = power.value();
     return p.x + p.y + p.z;
 }
@@ -142,9 +142,9 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
     ImGui::Spacing();
     const IterationStats& stats = snapshot.stats;
     const bool converged = !snapshot.running && stats.iteration > 0 && stats.residual < snapshot.tolerance;
-    row("State", "%s", snapshot.running ? "running" : converged ? "converged" : stats.iteration > 0 ? "paused" : "ready");
-    row("Iteration", "%zu", stats.iteration);
-    row(shoots(snapshot.method) ? "Unshot / emitted" : links(snapshot.method) ? "Sweep change" : "Residual", "%.3e",
+    solverRow("State", "%s", snapshot.running ? "running" : converged ? "converged" : stats.iteration > 0 ? "paused" : "ready");
+    solverRow("Iteration", "%zu", stats.iteration);
+    solverRow(shoots(snapshot.method) ? "Unshot / emitted" : links(snapshot.method) ? "Sweep change" : "Residual", "%.3e",
         stats.iteration > 0 ? stats.residual : 1.0);
     if (ImGui::IsItemHovered()) {
         const std::string_view meaning = methodInfo(snapshot.method).residual;
@@ -152,11 +152,11 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
                           meaning.data());
     }
     if (shoots(snapshot.method)) {
-        row("Unshot power", "%.4g W", total(stats.unshotPower));
+        solverRow("Unshot power", "%.4g W", totalWatts(stats.unshotPower));
         if (stats.shooter >= 0 && snapshot.mesh && snapshot.scene &&
             static_cast<std::size_t>(stats.shooter) < snapshot.mesh->patches.size()) {
             const std::size_t surface = snapshot.mesh->patches[static_cast<std::size_t>(stats.shooter)].surface;
-            row("Last shooter", "%s", snapshot.scene->surfaces.at(surface).name.c_str());
+            solverRow("Last shooter", "%s", snapshot.scene->surfaces.at(surface).name.c_str());
             if (ImGui::IsItemHovered())
                 ImGui::SetTooltip("Patch %lld shot its unshot power last (outlined in the 3D view)",
                                   static_cast<long long>(stats.shooter));
@@ -167,12 +167,12 @@ void SolverPanel::drawStats(const Snapshot& snapshot) {
         const std::size_t before = snapshot.history.size() >= 2 ? snapshot.history[snapshot.history.size() - 2].links : 0;
         const long long net = static_cast<long long>(stats.links) - static_cast<long long>(before);
         const long long removed = std::max(0LL, static_cast<long long>(stats.linksRefined) - net);
-        row("Links", "%zu (%+lld this step)", stats.links, snapshot.history.size() >= 2 ? net : 0LL);
+        solverRow("Links", "%zu (%+lld this step)", stats.links, snapshot.history.size() >= 2 ? net : 0LL);
         if (ImGui::IsItemHovered())
             ImGui::SetTooltip("This step created %zu links by refinement and removed the %lld they replaced",
                               stats.linksRefined, removed);
     }
-    row("Step time", "%.3f ms", stats.seconds * 1e3);
+    solverRow("Step time", "%.3f ms", stats.seconds * 1e3);
     if (!snapshot.error.empty()) ui::wrappedTextColoured(theme::kErrorRed, snapshot.error);
 }
 

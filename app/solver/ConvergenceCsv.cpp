@@ -12,7 +12,15 @@
 namespace radiant::app {
 namespace {
 
-/// RFC 4180: a field with a comma, quote or line break is quoted, its quotes doubled.
+/// The shortest text that reads back as the same double.
+std::string exact(double value) {
+    std::array<char, 32> buffer{};
+    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return {buffer.data(), result.ptr};
+}
+
+} // namespace
+
 std::string csvField(const std::string& text) {
     if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
     std::string quoted = "\"";
@@ -22,15 +30,6 @@ std::string csvField(const std::string& text) {
     }
     return quoted + "\"";
 }
-
-/// The shortest text that reads back as the same double.
-std::string exact(double value) {
-    std::array<char, 32> buffer{};
-    const auto result = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
-    return {buffer.data(), result.ptr};
-}
-
-} // namespace
 
 std::string convergenceCsv(const ConvergenceRecord& record, const SolveHistory& currentSteps) {
     std::string csv = "method,segment,label,iteration,solver_iteration,quantity,value\n";

@@ -14,6 +14,9 @@ namespace radiant::app {
 
 [[nodiscard]] std::string convergenceCsv(const ConvergenceRecord& record, const SolveHistory& currentSteps);
 
+/// One CSV field (RFC 4180): a field with a comma, quote or line break is quoted, its quotes doubled.
+[[nodiscard]] std::string csvField(const std::string& text);
+
 /// The first step (from 1) of `steps` whose residual is below `tolerance`, if any.
 [[nodiscard]] std::optional<std::size_t> firstStepBelow(const SolveHistory& steps, double tolerance);
 

@@ -9,7 +9,7 @@
 namespace radiant::app {
 namespace {
 
-double total(const Rgb& b) { return b.x + b.y + b.z; }
+double sumOfBands(const Rgb& b) { return b.x + b.y + b.z; }
 
 bool samePatches(const PatchMesh& a, const PatchMesh& b) {
     if (a.size() != b.size()) return false;
@@ -21,7 +21,7 @@ bool samePatches(const PatchMesh& a, const PatchMesh& b) {
 } // namespace
 
 double relativeDifference(const Rgb& a, const Rgb& b) {
-    const double ta = total(a), tb = total(b);
+    const double ta = sumOfBands(a), tb = sumOfBands(b);
     const double larger = std::max(std::abs(ta), std::abs(tb));
     return larger > 0 ? std::abs(ta - tb) / larger : 0.0;
 }

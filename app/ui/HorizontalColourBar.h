@@ -6,6 +6,8 @@
 
 #include <imgui.h>
 
+#include <glm/vec3.hpp>
+
 #include "render/ColourScale.h"
 
 namespace radiant::app {
@@ -16,6 +18,12 @@ struct HorizontalColourBar {
     float labelGapInFonts = 0.3f;         ///< a label closer than this to the previous one is left out
     bool outlined = false;                ///< a border around the bar
 };
+
+/// An sRGB colour (components in [0, 1]) as ImGui's packed colour, opaque.
+[[nodiscard]] inline ImU32 colourU32(const glm::dvec3& srgb) {
+    return ImGui::GetColorU32(
+        ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y), static_cast<float>(srgb.z), 1.0f));
+}
 
 /// Draws into the current window's draw list; reserves no layout room (the caller's Dummy does).
 void drawHorizontalColourBar(const HorizontalColourBar& bar, const std::function<ImU32(double)>& colourAt,

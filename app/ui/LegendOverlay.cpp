@@ -10,15 +10,6 @@
 
 namespace radiant::app {
 
-namespace {
-
-ImU32 colourU32(const glm::dvec3& srgb) {
-    return ImGui::GetColorU32(
-        ImVec4(static_cast<float>(srgb.x), static_cast<float>(srgb.y), static_cast<float>(srgb.z), 1.0f));
-}
-
-} // namespace
-
 LegendBarRect drawLegendOverlay(const render::ColourLegend& legend, const render::Viewport& view) {
     const float font = ImGui::GetFontSize();
     const float margin = font;

@@ -78,7 +78,7 @@ struct Cell {
 
 /// A convex triangle or quad over which the outer integral runs: `from`, or one of the (at most
 /// two) pieces of the part of `from` in front of `to`'s plane.
-struct Piece {
+struct FrontPiece {
     std::array<glm::dvec3, 4> corners{};
     std::size_t count = 0;
 };
@@ -86,7 +86,7 @@ struct Piece {
 /// The part of `from` in front of `to`'s plane, cut into a triangle or quad plus possibly one more
 /// triangle. Behind that plane the kernel is zero, and the kink where it reaches zero would ruin the
 /// quadrature's convergence, so the integral runs over the front part only.
-std::size_t frontPieces(const PatchPolygon& from, const PatchPolygon& to, double tolerance, std::array<Piece, 2>& pieces) {
+std::size_t frontPieces(const PatchPolygon& from, const PatchPolygon& to, double tolerance, std::array<FrontPiece, 2>& pieces) {
     std::array<glm::dvec3, 5> clipped{};
     std::size_t count = 0;
     // Corners within `tolerance` of the plane lie on it: a shared edge is not cut off.
@@ -116,7 +116,7 @@ std::size_t frontPieces(const PatchPolygon& from, const PatchPolygon& to, double
 
 /// A triangle's corners rotated so that the corner farthest from `target` comes last: the Duffy
 /// collapse then sits away from where the kernel is singular (an edge shared with `to`).
-Piece collapseFarthestCorner(Piece piece, const glm::dvec3& target) {
+FrontPiece collapseFarthestCorner(FrontPiece piece, const glm::dvec3& target) {
     if (piece.count != 3) return piece;
     std::size_t farthest = 0;
     double farthestDistance = -1;
@@ -136,7 +136,7 @@ Piece collapseFarthestCorner(Piece piece, const glm::dvec3& target) {
 /// triangle is the quad with its last corner doubled).
 class FromToIntegrand {
 public:
-    FromToIntegrand(const Piece& piece, const glm::dvec3& normal, const PatchPolygon& to)
+    FromToIntegrand(const FrontPiece& piece, const glm::dvec3& normal, const PatchPolygon& to)
         : FromToIntegrand(collapseFarthestCorner(piece, to.centroid), normal, to, 0) {}
 
     /// Integral of kernel * dA over the cell with the Gauss rule, in m^2.
@@ -167,22 +167,13 @@ public:
     }
 
 private:
-    FromToIntegrand(const Piece& piece, const glm::dvec3& normal, const PatchPolygon& to, int)
+    FromToIntegrand(const FrontPiece& piece, const glm::dvec3& normal, const PatchPolygon& to, int)
         : a_(piece.corners[0]), b_(piece.corners[1]), c_(piece.corners[2]),
           d_(piece.count == 4 ? piece.corners[3] : piece.corners[2]), normal_(normal), to_(to) {}
 
     glm::dvec3 a_, b_, c_, d_, normal_;
     const PatchPolygon& to_;
 };
-
-double circumradius(const PatchPolygon& polygon) {
-    double r2 = 0;
-    for (std::size_t i = 0; i < polygon.count; ++i) {
-        const glm::dvec3 d = polygon.vertices[i] - polygon.centroid;
-        r2 = std::max(r2, glm::dot(d, d));
-    }
-    return std::sqrt(r2);
-}
 
 /// Largest height of `polygon`'s corners above the plane through `point` with normal `normal`.
 double maxHeightAbove(const PatchPolygon& polygon, const glm::dvec3& point, const glm::dvec3& normal) {
@@ -285,7 +276,7 @@ double unoccludedFormFactor(const PatchPolygon& from, const PatchPolygon& to, do
         return 0.0;
     const double planeTolerance = 1e-9 * (radiusFrom + radiusTo);
 
-    std::array<Piece, 2> pieces;
+    std::array<FrontPiece, 2> pieces;
     const std::size_t pieceCount = frontPieces(from, to, planeTolerance, pieces);
     const Cell whole{0, 1, 0, 1};
     const double separation = glm::length(to.centroid - from.centroid) / (radiusFrom + radiusTo);

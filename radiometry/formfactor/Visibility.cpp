@@ -23,18 +23,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "radiometry/common/Mix64.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
 
 namespace radiant {
 namespace {
-
-std::uint64_t mix64(std::uint64_t z) {
-    // SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014).
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
 
 class SplitMix64 {
 public:

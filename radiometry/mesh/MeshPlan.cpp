@@ -11,6 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/common/NumberText.h"
 #include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/mesh/ConvexFan.h"
 #include "radiometry/mesh/VertexWelder.h"
@@ -117,12 +118,6 @@ std::size_t longestEdge(const std::vector<glm::dvec3>& corners, const Piece& pie
     return longest;
 }
 
-std::string describe(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", value);
-    return text;
-}
-
 SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double maxArea, double tolerance,
                         const std::vector<std::vector<std::vector<glm::dvec3>>>& contactPolygons) {
     const Surface& surface = scene.surfaces[surfaceIndex];
@@ -164,7 +159,7 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         for (const glm::dvec3& v : face.vertices) {
             if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
                 throw RadiantError({scene.name, "surface '" + surface.name + "', face " + std::to_string(f)},
-                                   "vertex (" + describe(v.x) + ", " + describe(v.y) + ", " + describe(v.z) +
+                                   "vertex (" + numberText(v.x) + ", " + numberText(v.y) + ", " + numberText(v.z) +
                                        ") is not finite");
             }
         }
@@ -283,7 +278,7 @@ double SurfacePlan::patchCount(const Piece& piece) const {
 MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
     if (!(options.maxPatchArea > 0) || !std::isfinite(options.maxPatchArea)) {
         throw RadiantError({scene.name, "max patch area"},
-                           "must be a positive number of m^2, not " + describe(options.maxPatchArea));
+                           "must be a positive number of m^2, not " + numberText(options.maxPatchArea));
     }
     MeshPlan plan;
     const double tolerance = weldTolerance(scene);

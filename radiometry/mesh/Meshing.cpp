@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/common/NumberText.h"
 #include "radiometry/mesh/MeshPlan.h"
 #include "radiometry/mesh/PatchMesh.h"
 
@@ -20,12 +21,6 @@ namespace {
 
 using detail::Piece;
 using detail::SurfacePlan;
-
-std::string describe(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", value);
-    return text;
-}
 
 /// Emits one surface's vertices and patches into the mesh.
 class SurfaceEmitter {
@@ -253,14 +248,14 @@ PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress*
     const detail::MeshPlan plan = detail::planMeshing(scene, options);
     if (plan.patchCount > static_cast<double>(options.patchBudget)) {
         throw BudgetError({scene.name, "meshing"},
-                          "meshing at " + describe(options.maxPatchArea) + " m^2 would make " +
-                              describe(plan.patchCount) + " patches; the budget is " +
-                              describe(static_cast<double>(options.patchBudget)));
+                          "meshing at " + threeDigits(options.maxPatchArea) + " m^2 would make " +
+                              threeDigits(plan.patchCount) + " patches; the budget is " +
+                              threeDigits(static_cast<double>(options.patchBudget)));
     }
     // Vertex indices are 32-bit: refuse what they cannot address, whatever the budget says.
     if (plan.patchCount > 1e9) {
-        throw BudgetError({scene.name, "meshing"}, "meshing at " + describe(options.maxPatchArea) +
-                                                       " m^2 would make " + describe(plan.patchCount) +
+        throw BudgetError({scene.name, "meshing"}, "meshing at " + threeDigits(options.maxPatchArea) +
+                                                       " m^2 would make " + threeDigits(plan.patchCount) +
                                                        " patches; at most 1e+09 can be indexed");
     }
 

@@ -51,6 +51,14 @@ inline constexpr double kRelativePlanarity = 1e-4;
     return glm::dot(polygon.normal, point - polygon.centroid) > kRelativePlanarity * std::sqrt(polygon.area);
 }
 
+/// The largest distance from the centroid to a corner, m: a sphere of this radius round the centroid
+/// holds the polygon.
+[[nodiscard]] inline double circumradius(const PatchPolygon& polygon) {
+    double radius = 0;
+    for (const glm::dvec3& corner : polygon.corners()) radius = std::max(radius, glm::length(corner - polygon.centroid));
+    return radius;
+}
+
 struct Patch {
     std::uint32_t surface = 0;  ///< index into Scene::surfaces
     std::uint32_t face = 0;     ///< index into that surface's faces

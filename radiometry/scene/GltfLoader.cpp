@@ -16,6 +16,7 @@
 #include <tiny_gltf.h>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/common/NumberText.h"
 #include "radiometry/scene/GltfAccessors.h"
 #include "radiometry/scene/GltfCameras.h"
 #include "radiometry/scene/GltfExternalFiles.h"
@@ -31,12 +32,6 @@ namespace {
 std::string oneLine(std::string text) {
     while (!text.empty() && (text.back() == '\n' || text.back() == '\r' || text.back() == ' ')) text.pop_back();
     for (std::size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
-    return text;
-}
-
-std::string describe(double value) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%.3g", value);
     return text;
 }
 
@@ -111,7 +106,7 @@ private:
         const std::vector<unsigned char> bytes = detail::readSceneFile(path_, options_.fileByteBudget);
         if (bytes.empty()) throw RadiantError({path_, ""}, "is empty, not a glTF file");
         if (bytes.size() > std::numeric_limits<unsigned int>::max())
-            throw BudgetError({path_, ""}, "is " + describe(static_cast<double>(bytes.size())) + " bytes; a glTF file is limited to 4 GiB");
+            throw BudgetError({path_, ""}, "is " + threeDigits(static_cast<double>(bytes.size())) + " bytes; a glTF file is limited to 4 GiB");
         // Absolute, so tinygltf's fallback to the current directory ("./" + uri) is the only
         // relative candidate and the file system below refuses it.
         std::error_code ec;
@@ -156,7 +151,7 @@ private:
     void readModelFromMemory() {
         if (memory_.empty()) throw RadiantError({path_, ""}, "is empty, not a glTF file");
         if (memory_.size() > std::numeric_limits<unsigned int>::max())
-            throw BudgetError({path_, ""}, "is " + describe(static_cast<double>(memory_.size())) + " bytes; glTF from memory is limited to 4 GiB");
+            throw BudgetError({path_, ""}, "is " + threeDigits(static_cast<double>(memory_.size())) + " bytes; glTF from memory is limited to 4 GiB");
         const auto length = static_cast<unsigned int>(memory_.size());
         tinygltf::TinyGLTF reader;
         reader.SetFsCallbacks(noFileSystem());
@@ -195,7 +190,7 @@ private:
         // A node may be the child of many nodes, so a small file can expand exponentially.
         if (++nodeVisits_ > kMaxNodeInstances)
             throw BudgetError({path_, "node " + std::to_string(node)},
-                              "the node hierarchy expands to more than " + describe(static_cast<double>(kMaxNodeInstances)) + " node instances");
+                              "the node hierarchy expands to more than " + threeDigits(static_cast<double>(kMaxNodeInstances)) + " node instances");
         const tinygltf::Node& n = model_.nodes[static_cast<std::size_t>(node)];
         const glm::dmat4 world = parent * localTransform(n);
         if (n.mesh >= 0) instances.push_back({node, world});
@@ -226,8 +221,8 @@ private:
             }
         }
         if (triangles > static_cast<double>(options_.triangleBudget))
-            throw BudgetError({path_, ""}, "the scene has " + describe(triangles) + " triangles; the budget is " +
-                                               describe(static_cast<double>(options_.triangleBudget)));
+            throw BudgetError({path_, ""}, "the scene has " + threeDigits(triangles) + " triangles; the budget is " +
+                                               threeDigits(static_cast<double>(options_.triangleBudget)));
     }
 
     std::size_t sceneMaterial(int gltfMaterial, const SourceLocation& where) {

@@ -9,6 +9,7 @@
 #include <glm/common.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/common/NumberText.h"
 
 namespace radiant::detail {
 namespace {
@@ -17,13 +18,7 @@ constexpr double kMaxReflectance = 0.999;
 /// What an unreadable base colour texture averages to: the grey a primitive without material gets.
 constexpr double kMissingTextureMean = 0.5;
 
-std::string describeNumber(double v) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%g", v);
-    return text;
-}
-
-std::string describe(const Rgb& v) {
+std::string rgbText(const Rgb& v) {
     char text[96];
     std::snprintf(text, sizeof text, "(%g, %g, %g)", v.x, v.y, v.z);
     return text;
@@ -95,8 +90,8 @@ Material convertMaterial(const tinygltf::Model& model, std::size_t index, const 
             const std::string uri = hasImage ? model.images[static_cast<std::size_t>(image)].uri : std::string();
             const std::string what = "base colour texture " + std::to_string(texture) +
                                      (uri.empty() || uri.rfind("data:", 0) == 0 ? std::string() : " '" + uri + "'");
-            warnings.push_back(where.str() + ": " + what + " could not be read; using reflectance " + describe(reflectance) +
-                               " (baseColorFactor x " + describeNumber(kMissingTextureMean) + ", a mid grey) instead");
+            warnings.push_back(where.str() + ": " + what + " could not be read; using reflectance " + rgbText(reflectance) +
+                               " (baseColorFactor x " + numberText(kMissingTextureMean) + ", a mid grey) instead");
         }
     }
 
@@ -118,12 +113,12 @@ Material convertMaterial(const tinygltf::Model& model, std::size_t index, const 
 
     for (int c = 0; c < 3; ++c) {
         if (!std::isfinite(reflectance[c]) || reflectance[c] < 0)
-            throw RadiantError(where, "reflectance " + describe(reflectance) + " must lie in [0, 1)");
+            throw RadiantError(where, "reflectance " + rgbText(reflectance) + " must lie in [0, 1)");
         if (!std::isfinite(exitance[c]) || exitance[c] < 0)
-            throw RadiantError(where, "negative or non-finite emission " + describe(exitance) + " W/m^2");
+            throw RadiantError(where, "negative or non-finite emission " + rgbText(exitance) + " W/m^2");
     }
     if (reflectance.x >= 1 || reflectance.y >= 1 || reflectance.z >= 1) {
-        warnings.push_back(where.str() + ": reflectance " + describe(reflectance) +
+        warnings.push_back(where.str() + ": reflectance " + rgbText(reflectance) +
                            " would create energy; bands >= 1 clamped to 0.999");
         reflectance = glm::min(reflectance, Rgb(kMaxReflectance));
     }

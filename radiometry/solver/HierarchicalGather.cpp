@@ -105,8 +105,6 @@ constexpr double kBrightHidden = 0.01;
 /// patches' distance from converged Gauss-Seidel (seeds 1-6) came out the same at 16, 4 and 1.
 constexpr double kFarTermDistanceSquaredOverArea = 4;
 
-double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
-
 /// Whether a gather at x reads `source` through its children: area over squared distance above
 /// `expansion` (HierarchicalSolver::kSourceExpansion; expandSource says why).
 bool readThroughChildren(const ElementTree& tree, ElementIndex source, const glm::dvec3& x, double expansion) {

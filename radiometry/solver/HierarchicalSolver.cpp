@@ -18,8 +18,6 @@ namespace radiant {
 
 namespace {
 
-double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
-
 std::uint64_t pairSeed(std::uint64_t seed, ElementIndex receiver, ElementIndex source) {
     return hierarchical::mix(seed ^ ((static_cast<std::uint64_t>(receiver) << 32) | source));
 }

@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/common/Mix64.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/solver/FormFactorMatrix.h"
@@ -78,13 +79,6 @@ constexpr double kFullPenumbraShare = 0.02;
 /// ratio but for its variation across the group.
 constexpr double kRatioDistanceSquaredOverArea = 8;
 
-std::uint64_t mix64(std::uint64_t z) {
-    // SplitMix64's finaliser (Steele, Lea & Flood, OOPSLA 2014).
-    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-    z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-    return z ^ (z >> 31);
-}
-
 /// Uniform in [0, 1) from the next state of a SplitMix64 sequence.
 double nextUniform(std::uint64_t& state) {
     return static_cast<double>(mix64(state += 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53;
@@ -100,13 +94,6 @@ glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
 }
 
 /// Distance from x to the planar convex polygon (m).
-/// The largest distance from a polygon's centroid to its corners.
-double circumradius(const PatchPolygon& polygon) {
-    double radius = 0;
-    for (const glm::dvec3& corner : polygon.corners()) radius = std::max(radius, glm::length(corner - polygon.centroid));
-    return radius;
-}
-
 double distanceToPolygon(const PatchPolygon& p, const glm::dvec3& x) {
     const double height = glm::dot(x - p.centroid, p.normal);
     const glm::dvec3 projected = x - height * p.normal;

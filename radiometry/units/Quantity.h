@@ -3,8 +3,10 @@
 // irradiance is expected. A quantity carries the exponents of its units (watt, metre, steradian);
 // products and quotients derive the right type at compile time, as in Magnum's Math::Unit and
 // pbrt's Point3/Vector3/Normal3 split.
-#include <glm/vec3.hpp>
+#include <algorithm>
 #include <utility>
+
+#include <glm/vec3.hpp>
 
 namespace radiant {
 
@@ -70,6 +72,8 @@ using Intensity = Quantity<double, 1, 0, -1>;          ///< W/sr (radiant intens
 
 /// Three spectral bands (R, G, B), each solved independently.
 using Rgb = glm::dvec3;
+/// The largest of the three bands.
+[[nodiscard]] inline double maxBand(const Rgb& v) { return std::max({v.x, v.y, v.z}); }
 using PowerRgb = Quantity<Rgb, 1, 0, 0>;
 using IrradianceRgb = Quantity<Rgb, 1, -2, 0>;
 using RadianceRgb = Quantity<Rgb, 1, -2, -1>;

@@ -33,7 +33,7 @@ using radiant::test::requireDisplay;
 namespace {
 
 /// Mean colour (0..255 per channel) of a (2r+1)^2 block of pixels around `centre`.
-glm::dvec3 meanColour(const render::ImageRgb8& image, const glm::dvec3& centre, int r = 3) {
+glm::dvec3 meanColourAround(const render::ImageRgb8& image, const glm::dvec3& centre, int r = 3) {
     glm::dvec3 sum(0.0);
     int count = 0;
     for (int y = static_cast<int>(centre.y) - r; y <= static_cast<int>(centre.y) + r; ++y)
@@ -80,7 +80,7 @@ TEST_CASE("a closed room opens showing its floor from the home camera, and a cli
     const render::ImageRgb8 image = lab.frameAndCapture();
     // Oak (reflectance 0.55, 0.35, 0.2) under a near-white lamp: red over green over blue, where the
     // plaster walls (0.7 grey) and the blue cabinet would show grey or blue.
-    const glm::dvec3 floor = meanColour(image, glm::dvec3(pixel, 0.0));
+    const glm::dvec3 floor = meanColourAround(image, glm::dvec3(pixel, 0.0));
     INFO("floor pixel (" << floor.x << ", " << floor.y << ", " << floor.z << ")");
     CHECK(floor.x > floor.y + 15);
     CHECK(floor.y > floor.z + 10);
@@ -129,7 +129,7 @@ TEST_CASE("seen from outside, a closed room's near walls are culled like a cut-a
     renderer.reset();  // GL objects die while the context lives
     // Oak's reflectance (0.55, 0.35, 0.2), dimmed by the unlit view's shading: red over green over
     // blue; the plaster ceiling or walls, had they hidden it, are grey.
-    const glm::dvec3 floor = meanColour(image, pixel);
+    const glm::dvec3 floor = meanColourAround(image, pixel);
     INFO("floor pixel (" << floor.x << ", " << floor.y << ", " << floor.z << ")");
     CHECK(floor.x > floor.y + 20);
     CHECK(floor.y > floor.z + 15);

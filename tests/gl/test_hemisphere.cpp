@@ -20,6 +20,7 @@
 #include "render/hemisphere/HemisphereOverlay.h"
 #include "render/OffscreenRender.h"
 #include "render/camera/Camera.h"
+#include "tests/support/Relative.h"
 
 using namespace radiant;
 
@@ -27,7 +28,7 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 
 /// Approx with a purely relative tolerance (doctest's default scale of 1 would make it absolute for small values).
-doctest::Approx relativeTo(double value, double tolerance) { return doctest::Approx(value).epsilon(tolerance).scale(0); }
+using radiant::test::relativeTo;
 
 double cornerFormFactor(double a, double b, double c) {
     const double A = a / c, B = b / c;

@@ -27,6 +27,8 @@
 #include "radiometry/scene/SceneLibrary.h"
 #include "radiometry/solver/Solver.h"
 #include "tests/support/RunRadiant.h"
+#include "tests/support/Common.h"
+#include "tests/support/CatalogViewFactors.h"
 
 using namespace radiant;
 namespace fs = std::filesystem;
@@ -35,21 +37,12 @@ namespace {
 
 std::string blenderFile(const std::string& name) { return std::string(RADIANT_TEST_DATA_DIR) + "/blender/" + name; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
-bool anyContains(const std::vector<std::string>& lines, const std::string& part) {
-    for (const std::string& line : lines)
-        if (contains(line, part)) return true;
-    return false;
-}
+using radiant::test::anyContains;
 
 /// Directly opposed parallel rectangles a x b at distance c (docs/reference.md, Howell).
-double parallelRectangles(double a, double b, double c) {
-    const double X = a / c, Y = b / c;
-    return 2 / (std::numbers::pi * X * Y) *
-           (std::log(std::sqrt((1 + X * X) * (1 + Y * Y) / (1 + X * X + Y * Y))) + X * std::sqrt(1 + Y * Y) * std::atan(X / std::sqrt(1 + Y * Y)) +
-            Y * std::sqrt(1 + X * X) * std::atan(Y / std::sqrt(1 + X * X)) - X * std::atan(X) - Y * std::atan(Y));
-}
+using radiant::test::parallelRectangles;
 
 struct Solved {
     Scene scene;
@@ -70,7 +63,7 @@ struct Solved {
     [[nodiscard]] double power(const std::string& surface) const { return meanB(surface) * scene.surfaces[scene.findSurface(surface)].area(); }
 };
 
-Solved solve(const std::string& file, double maxPatchArea) {
+Solved solveBlenderScene(const std::string& file, double maxPatchArea) {
     Solved solved{loadScene(blenderFile(file)).scene, {}, {}};
     solved.mesh = meshScene(solved.scene, MeshingOptions{maxPatchArea});
     const auto solver = makeSolver(SolverMethod::GaussSeidel, solved.scene, solved.mesh);
@@ -93,7 +86,7 @@ TEST_CASE("Blender's default plane facing up, double-sided, lights the floor bel
     // Lamp: 2 m x 2 m, black, 10 W/m^2 from each side, 1 m above a 2 m x 2 m floor of reflectance 0.5.
     // Nothing else is in the scene, so the floor's top sees only the lamp's underside, once:
     // B = rho M F(2, 2, 1), F from the closed form, not from the code's quadrature.
-    const Solved solved = solve("plane_lamp.gltf", 0.04);
+    const Solved solved = solveBlenderScene("plane_lamp.gltf", 0.04);
     REQUIRE(solved.scene.surfaces.size() == 4);
     CHECK(solved.scene.doubleSidedSurfaceCount() == 2);
     CHECK(solved.scene.surfaces[0].name == "Lamp");
@@ -130,7 +123,7 @@ TEST_CASE("Blender's default plane facing up, double-sided, lights the floor bel
 TEST_CASE("a room made of Blender's cube (normals outward), double-sided, is lit inside and balances") {
     // Closed enclosure of uniform reflectance 0.5 (docs/reference.md): (1 - rho) sum A B = sum A E over the
     // inside; the lamp (0.5 m x 0.5 m, 10 W/m^2 from each side) emits 5 W.
-    const Solved solved = solve("cube_room.gltf", 0.1);
+    const Solved solved = solveBlenderScene("cube_room.gltf", 0.1);
     CHECK(solved.scene.doubleSidedSurfaceCount() == 2);
     const double inside = solved.power("Cube (back)") + solved.power("Lamp") + solved.power("Lamp (back)");
     CHECK(0.5 * inside == doctest::Approx(5.0).epsilon(0.02).scale(0));

@@ -29,6 +29,7 @@
 #include "radiometry/solver/SolveDefaults.h"
 #include "tests/support/Relative.h"
 #include "tests/support/RunRadiant.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 using radiant::test::relativeTo;
@@ -37,9 +38,9 @@ namespace {
 
 std::string groupingFile(const std::string& name) { return std::string(RADIANT_TEST_DATA_DIR) + "/grouping/" + name; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
-PatchMesh meshAt(const Scene& scene, double area) {
+PatchMesh meshGrouped(const Scene& scene, double area) {
     MeshingOptions options;
     options.maxPatchArea = area;
     return meshScene(scene, options);
@@ -62,7 +63,7 @@ TEST_CASE("the built-in scenes of large quads are never grouped by default: the 
         for (const double area : {kSolveDefaults.maxPatchArea, 0.002, 0.0025, 0.005, 0.01, 0.05, 0.12, 0.25, 1.0}) {
             CAPTURE(name);
             CAPTURE(area);
-            const PatchMesh mesh = meshAt(scene, area);
+            const PatchMesh mesh = meshGrouped(scene, area);
             const SystemChoice choice = chooseSystem(mesh, area, GroupingMode::Auto, std::nullopt);
             INFO(choice.groupingReason);
             CHECK_FALSE(choice.groups);
@@ -73,7 +74,7 @@ TEST_CASE("the built-in scenes of large quads are never grouped by default: the 
         }
     }
     // The Cornell box keeps its patch count: the accuracy table's and the lab's 2,805.
-    CHECK(meshAt(makeCornellBox(), kSolveDefaults.maxPatchArea).size() == 2805);
+    CHECK(meshGrouped(makeCornellBox(), kSolveDefaults.maxPatchArea).size() == 2805);
     // Its stderr is what it was (the method's line only); the JSON says why nothing was grouped.
     const test::CommandRun run = test::runRadiant("solve cornell-box --max-patch-area 0.05 --max-iterations 1 --json -");
     INFO(run.err);
@@ -133,7 +134,7 @@ TEST_CASE("radiant solve groups a finely tessellated object by default: unknowns
 TEST_CASE("the default grouping keeps B = E / (1 - rho) inside the bevelled box furnace, on every patch, within 0.2%") {
     const Scene scene = loadScene(groupingFile("bevelled_box_furnace.gltf")).scene;
     const double area = 1.0;
-    const PatchMesh mesh = meshAt(scene, area);
+    const PatchMesh mesh = meshGrouped(scene, area);
     const SystemChoice choice = chooseSystem(mesh, area, GroupingMode::Auto, std::nullopt);
     INFO(choice.groupingReason);
     REQUIRE(choice.groups);
@@ -219,7 +220,7 @@ TEST_CASE("the lab opens a room at about the Cornell box's patch count, and the 
     CHECK(opening.maxPatchArea == relativeTo(0.025, 1e-12));
     CHECK(contains(opening.reason, "250 cm^2 for the scene's "));
     CHECK(contains(opening.reason, "2,694 patches, about the Cornell box's 2,805 (10 cm^2 would make 61,935)"));
-    const PatchMesh mesh = meshAt(room, opening.maxPatchArea);
+    const PatchMesh mesh = meshGrouped(room, opening.maxPatchArea);
     CHECK(mesh.size() == 2694);
     const SystemChoice choice = chooseSystem(mesh, opening.maxPatchArea, GroupingMode::Auto, std::nullopt);
     CHECK(choice.method.method == SolverMethod::Progressive);

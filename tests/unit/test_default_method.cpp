@@ -27,6 +27,7 @@
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 #include "tests/support/RunRadiant.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 using namespace radiant::app;
@@ -34,7 +35,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 using Run = test::CommandRun;
 using test::runRadiant;

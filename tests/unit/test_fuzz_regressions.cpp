@@ -13,6 +13,7 @@
 #include "app/cli/CommandLine.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/GltfLoader.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 namespace fs = std::filesystem;
@@ -34,7 +35,7 @@ std::vector<fs::path> filesIn(const std::string& folder) {
     return files;
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 std::string memoryLoadError(const std::vector<unsigned char>& bytes) {
     try {

@@ -17,6 +17,7 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 namespace fs = std::filesystem;
@@ -25,7 +26,7 @@ namespace {
 
 std::string regressionFile(const std::string& name) { return std::string(RADIANT_TEST_DATA_DIR) + "/regression-gltf/" + name; }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 struct Refusal {
     std::string message;

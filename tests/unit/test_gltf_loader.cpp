@@ -12,6 +12,7 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/GltfLoader.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
@@ -29,7 +30,7 @@ std::string loadError(const std::string& name, const SceneLoadOptions& options =
     return "";
 }
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 bool anyWarningContains(const LoadedScene& loaded, const std::string& part) {
     return std::any_of(loaded.warnings.begin(), loaded.warnings.end(), [&](const std::string& w) { return contains(w, part); });

@@ -25,11 +25,12 @@
 #include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/BuiltinScenes.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using radiant::test::kPi;
 
 /// Approx with a purely relative tolerance (doctest's default scale of 1 would make it absolute for small values).
 using radiant::test::relativeTo;

@@ -12,11 +12,12 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/hemisphere/HemisphereSampler.h"
 #include "radiometry/hemisphere/HemisphericalCoordinates.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using radiant::test::kPi;
 const auto one = [](Radians, Radians) { return 1.0; };
 const auto cosine = [](Radians theta, Radians) { return std::cos(theta.value()); };
 const auto cosineSquared = [](const glm::dvec3& d) { return d.z * d.z; };

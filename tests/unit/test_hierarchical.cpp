@@ -19,17 +19,13 @@
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/ImportanceSolver.h"
 #include "radiometry/solver/Solver.h"
+#include "tests/support/MeshTopology.h"
 
 using namespace radiant;
 
 namespace {
 
-Face makeFace(std::initializer_list<glm::dvec3> corners) {
-    Face face;
-    face.vertices = corners;
-    face.updateGeometry();
-    return face;
-}
+using radiant::test::makeFace;
 
 /// Turns the face around when its normal does not point towards `inside`.
 Face facing(Face face, const glm::dvec3& inside) {
@@ -148,9 +144,9 @@ std::unique_ptr<HierarchicalSolver> makeMethod(SolverMethod method, const Scene&
     return std::make_unique<HierarchicalSolver>(scene, mesh, options, nullptr);
 }
 
-constexpr SolverMethod kMethods[] = {SolverMethod::Hierarchical, SolverMethod::Importance};
+constexpr SolverMethod kHierarchicalMethods[] = {SolverMethod::Hierarchical, SolverMethod::Importance};
 
-Material grey(const std::string& name, double rho, double exitance) {
+Material greyMaterial(const std::string& name, double rho, double exitance) {
     return {name, Rgb(rho), ExitanceRgb(Rgb(exitance))};
 }
 
@@ -213,14 +209,14 @@ TEST_CASE("element tree: memory grows linearly with the elements") {
 
 // ctest-case-labels: heavy
 TEST_CASE("hierarchical: the furnace converges to E / (1 - rho)") {
-    for (const SolverMethod method : kMethods)
+    for (const SolverMethod method : kHierarchicalMethods)
         for (const auto& values : {std::pair{0.3, glm::dvec3(2, 0.5, 1)}, std::pair{0.5, glm::dvec3(1, 1, 1)}}) {
             const double rho = values.first;  // not structured bindings: clang 14 cannot CAPTURE those
             const glm::dvec3 size = values.second;
             {
                 CAPTURE(methodName(method));
                 CAPTURE(rho);
-                const Scene scene = makeClosedBox(size, {grey("all", rho, 1.0)}, {0, 0, 0, 0, 0, 0});
+                const Scene scene = makeClosedBox(size, {greyMaterial("all", rho, 1.0)}, {0, 0, 0, 0, 0, 0});
                 // The camera sits inside, looking at the far wall.
                 auto solver = makeMethod(method, scene, gridPatches(scene, 4), unoccluded(1e-5, 1e-4), 0.5 * size,
                                          {0.5 * size.x, 0.5 * size.y, size.z});
@@ -250,8 +246,8 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
         const double F = radiant::test::parallelRectangles(g.a, g.b, g.c);  // equal areas: F12 = F21
         SUBCASE("a black emitter: the receiver's mean is exactly E2 + rho2 F E1") {
             const double E1 = 1, E2 = 0.25, rho2 = 0.6;
-            const Scene scene = makePlates(g.a, g.b, g.c, grey("emitter", 0, E1), grey("receiver", rho2, E2));
-            for (const SolverMethod method : kMethods) {
+            const Scene scene = makePlates(g.a, g.b, g.c, greyMaterial("emitter", 0, E1), greyMaterial("receiver", rho2, E2));
+            for (const SolverMethod method : kHierarchicalMethods) {
                 CAPTURE(methodName(method));
                 // The camera between the plates looks at the receiver.
                 auto solver = makeMethod(method, scene, facesAsPatches(scene), unoccluded(1e-5, 1e-5),
@@ -263,9 +259,9 @@ TEST_CASE("hierarchical: two parallel plates match the two-patch closed form") {
         }
         SUBCASE("both reflecting: B1 = (E1 + rho1 F12 E2) / (1 - rho1 rho2 F12 F21)") {
             const double E1 = 1, E2 = 0.5, rho1 = 0.4, rho2 = 0.5;
-            const Scene scene = makePlates(g.a, g.b, g.c, grey("one", rho1, E1), grey("two", rho2, E2));
+            const Scene scene = makePlates(g.a, g.b, g.c, greyMaterial("one", rho1, E1), greyMaterial("two", rho2, E2));
             const double denominator = 1 - rho1 * rho2 * F * F;
-            for (const SolverMethod method : kMethods) {
+            for (const SolverMethod method : kHierarchicalMethods) {
                 CAPTURE(methodName(method));
                 auto solver = makeMethod(method, scene, facesAsPatches(scene), unoccluded(1e-5, 1e-5),
                                          {0.5 * g.a, 0.5 * g.b, 0.1 * g.c}, {0.5 * g.a, 0.5 * g.b, g.c});
@@ -286,7 +282,7 @@ TEST_CASE("hierarchical: energy balance (1 - rho) sum A B = sum A E in a closed 
         std::vector<Material> materials = {{"wall", Rgb(rho), ExitanceRgb{}},
                                            {"lamp", Rgb(rho), ExitanceRgb(Rgb(3.0, 2.0, 1.0))}};
         const Scene scene = makeClosedBox({1.5, 1, 2}, materials, {0, 1, 0, 0, 0, 0});
-        for (const SolverMethod method : kMethods) {
+        for (const SolverMethod method : kHierarchicalMethods) {
             CAPTURE(methodName(method));
             auto solver = makeMethod(method, scene, facesAsPatches(scene), unoccluded(1e-5, 1e-4), {0.75, 0.5, 0.2},
                                      {0.75, 0.3, 2});
@@ -304,7 +300,7 @@ TEST_CASE("hierarchical: energy balance (1 - rho) sum A B = sum A E in a closed 
 TEST_CASE("hierarchical: links refine more near the light than far from it") {
     // A 4 m x 4 m floor under a small lamp 0.5 m above one corner region.
     Scene scene;
-    scene.materials = {grey("floor", 0.5, 0), grey("lamp", 0, 10)};
+    scene.materials = {greyMaterial("floor", 0.5, 0), greyMaterial("lamp", 0, 10)};
     scene.surfaces.push_back({"floor", 0, {makeFace({{0, 0, 0}, {4, 0, 0}, {4, 4, 0}, {0, 4, 0}})}, "test"});
     scene.surfaces.push_back(
         {"lamp", 1, {makeFace({{0.75, 0.75, 0.5}, {0.75, 1.25, 0.5}, {1.25, 1.25, 0.5}, {1.25, 0.75, 0.5}})}, "test"});
@@ -330,10 +326,10 @@ TEST_CASE("hierarchical: links refine more near the light than far from it") {
 TEST_CASE("hierarchical: setMaterial keeps the links and resumes to the fresh answer") {
     const double a = 1, b = 1, c = 1;
     const double F = radiant::test::parallelRectangles(a, b, c);
-    const Scene before = makePlates(a, b, c, grey("emitter", 0, 1), grey("receiver", 0.3, 0));
-    const Scene after = makePlates(a, b, c, grey("emitter", 0, 2), grey("receiver", 0.7, 0));
+    const Scene before = makePlates(a, b, c, greyMaterial("emitter", 0, 1), greyMaterial("receiver", 0.3, 0));
+    const Scene after = makePlates(a, b, c, greyMaterial("emitter", 0, 2), greyMaterial("receiver", 0.7, 0));
     const glm::dvec3 eye{0.5, 0.5, 0.1}, target{0.5, 0.5, 1};
-    for (const SolverMethod method : kMethods) {
+    for (const SolverMethod method : kHierarchicalMethods) {
         CAPTURE(methodName(method));
         auto resumed = makeMethod(method, before, facesAsPatches(before), unoccluded(1e-5, 1e-5), eye, target);
         solve(*resumed);
@@ -458,7 +454,7 @@ TEST_CASE("importance: refinement follows the camera") {
     // Two identical closed boxes side by side lit alike; the camera looks into the first only.
     // Importance-driven refinement spends its elements there.
     Scene scene;
-    scene.materials = {grey("wall", 0.5, 0), grey("lamp", 0.5, 5)};
+    scene.materials = {greyMaterial("wall", 0.5, 0), greyMaterial("lamp", 0.5, 5)};
     for (const double offset : {0.0, 5.0}) {
         const Scene box = makeClosedBox({1, 1, 1}, scene.materials, {0, 1, 0, 0, 0, 0});
         for (Surface surface : box.surfaces) {

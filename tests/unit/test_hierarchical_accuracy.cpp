@@ -59,7 +59,7 @@ PatchMesh meshed(const Scene& scene, double maxPatchArea) {
 }
 
 /// F from a differential area to a parallel a x b rectangle whose corner is on its normal, c away.
-double cornerRectangle(double a, double b, double c) {
+double cornerRectangleFormFactor(double a, double b, double c) {
     const double A = a / c, B = b / c;
     return (A / std::sqrt(1 + A * A) * std::atan(B / std::sqrt(1 + A * A)) +
             B / std::sqrt(1 + B * B) * std::atan(A / std::sqrt(1 + B * B))) /
@@ -167,8 +167,8 @@ TEST_CASE("hierarchical point value: the links' gather is the exact differential
         CAPTURE(at.x);
         CAPTURE(at.y);
         // The lamp split at the point's foot into four rectangles with a corner there.
-        const double expected = rho * (cornerRectangle(at.x, at.y, 1) + cornerRectangle(1 - at.x, at.y, 1) +
-                                       cornerRectangle(at.x, 1 - at.y, 1) + cornerRectangle(1 - at.x, 1 - at.y, 1));
+        const double expected = rho * (cornerRectangleFormFactor(at.x, at.y, 1) + cornerRectangleFormFactor(1 - at.x, at.y, 1) +
+                                       cornerRectangleFormFactor(at.x, 1 - at.y, 1) + cornerRectangleFormFactor(1 - at.x, 1 - at.y, 1));
         const Rgb b = solver.radiosityAt(1, 0, {at.x, at.y, 1});
         CHECK(b.x == doctest::Approx(expected).scale(0).epsilon(1e-3));
     }
@@ -372,7 +372,7 @@ bool segmentMeetsTriangle(const glm::dvec3& a, const glm::dvec3& b, const glm::d
     return t > 1e-9 && t < 1 - 1e-9;
 }
 
-PatchPolygon polygonOf(std::initializer_list<glm::dvec3> corners) { return makeElementPolygon(std::vector<glm::dvec3>(corners)); }
+PatchPolygon elementPolygonOf(std::initializer_list<glm::dvec3> corners) { return makeElementPolygon(std::vector<glm::dvec3>(corners)); }
 
 } // namespace
 
@@ -387,7 +387,7 @@ TEST_CASE("hierarchical shaft: a face it calls separated meets no segment betwee
         const glm::dvec3 c = point();
         const glm::dvec3 u = 0.3 * (point() - 0.5), v0 = 0.3 * (point() - 0.5);
         const glm::dvec3 v = v0 - glm::dot(v0, u) / glm::dot(u, u) * u;  // a rectangle, any orientation
-        return polygonOf({c - u - v, c + u - v, c + u + v, c - u + v});
+        return elementPolygonOf({c - u - v, c + u - v, c + u + v, c - u + v});
     };
     int separated = 0, blocking = 0;
     for (int trial = 0; trial < 4000; ++trial) {
@@ -412,8 +412,8 @@ TEST_CASE("hierarchical shaft: a face it calls separated meets no segment betwee
 TEST_CASE("hierarchical shaft: a blocker inside the shaft is kept, one beside a slanted shaft is not") {
     // Unit squares at z = 0 and z = 1, the upper one shifted by 1 in x: at z = 1/2 the shaft covers
     // 1/2 < x < 3/2.
-    const PatchPolygon lower = polygonOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
-    const PatchPolygon upper = polygonOf({{1, 0, 1}, {1, 1, 1}, {2, 1, 1}, {2, 0, 1}});
+    const PatchPolygon lower = elementPolygonOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}});
+    const PatchPolygon upper = elementPolygonOf({{1, 0, 1}, {1, 1, 1}, {2, 1, 1}, {2, 0, 1}});
     const hierarchical::Shaft shaft(lower, upper, 1e-9);
     const auto plate = [](double x0, double x1) {
         return std::vector<glm::dvec3>{{x0, 0.2, 0.5}, {x1, 0.2, 0.5}, {x1, 0.8, 0.5}, {x0, 0.8, 0.5}};

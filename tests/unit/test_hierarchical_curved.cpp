@@ -32,7 +32,7 @@ Face polygonFace(std::vector<glm::dvec3> corners) {
 
 /// A UV sphere (`segments` x `rings`, Blender's): quads between rings, triangles at the poles, wound
 /// counter-clockwise seen from outside, or from inside when `inward`.
-std::vector<Face> uvSphere(glm::dvec3 centre, double radius, int segments, int rings, bool inward) {
+std::vector<Face> uvSphereFacing(glm::dvec3 centre, double radius, int segments, int rings, bool inward) {
     const auto at = [&](int ring, int segment) {
         const double polar = std::numbers::pi * ring / rings, azimuth = 2 * std::numbers::pi * segment / segments;
         return centre + radius * glm::dvec3(std::sin(polar) * std::cos(azimuth), std::cos(polar),
@@ -110,7 +110,7 @@ TEST_CASE("hierarchical furnace inside a tessellated sphere: every leaf is E / (
     Scene scene;
     scene.name = "sphere furnace";
     scene.materials = {{"glowing", Rgb(0.5), ExitanceRgb(Rgb(1.0))}};
-    scene.surfaces.push_back({"sphere inside", 0, uvSphere({0, 0, 0}, 1, 32, 16, true), "test"});
+    scene.surfaces.push_back({"sphere inside", 0, uvSphereFacing({0, 0, 0}, 1, 32, 16, true), "test"});
     const PatchMesh mesh = meshScene(scene, MeshingOptions{0.05});
     const double expected = 1 / (1 - 0.5);
     HierarchicalSolver solver(scene, mesh, SolverOptions{}, nullptr);
@@ -142,7 +142,7 @@ TEST_CASE("hierarchical sphere in a glowing box: (1 - rho) sum A B = sum A E, an
         scene.materials = {{"glowing", Rgb(0.5), ExitanceRgb(Rgb(1.0))},
                            {"sphere", Rgb(0.5), ExitanceRgb(Rgb(sphereEmits ? 1.0 : 0.0))}};
         scene.surfaces.push_back({"box", 0, boxInside({-1, 0, -1}, {1, 2, 1}), "test"});
-        scene.surfaces.push_back({"sphere", 1, uvSphere({0, 0.7, 0}, 0.5, 32, 16, false), "test"});
+        scene.surfaces.push_back({"sphere", 1, uvSphereFacing({0, 0.7, 0}, 0.5, 32, 16, false), "test"});
         const PatchMesh mesh = meshScene(scene, MeshingOptions{0.05});
         HierarchicalSolver solver(scene, mesh, SolverOptions{}, nullptr);
         for (int k = 0; k < 200 && solver.step().residual > 1e-7; ++k) {

@@ -25,19 +25,19 @@ using namespace radiant;
 
 namespace {
 
-PatchMesh meshAt(const Scene& scene, double maxPatchArea) {
+PatchMesh meshForImportance(const Scene& scene, double maxPatchArea) {
     MeshingOptions options;
     options.maxPatchArea = maxPatchArea;
     return meshScene(scene, options);
 }
 
-void solveTo(Solver& solver, double residual, std::size_t maxSteps) {
+void solveImportanceTo(Solver& solver, double residual, std::size_t maxSteps) {
     for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
     REQUIRE(solver.lastStats().residual <= residual);
 }
 
 /// Area-weighted mean radiosity (first band) of each surface over the mesh's patches.
-std::vector<double> surfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) {
+std::vector<double> importanceSurfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) {
     std::vector<double> means;
     for (std::size_t s = 0; s + 1 < mesh.surfaceFirstPatch.size(); ++s) {
         double power = 0, area = 0;
@@ -65,7 +65,7 @@ TEST_CASE("importance refines on every built-in scene from its home view") {
     for (const std::string& name : builtinSceneNames()) {
         CAPTURE(name);
         const Scene scene = makeBuiltinScene(name);
-        const PatchMesh mesh = meshAt(scene, 0.05);
+        const PatchMesh mesh = meshForImportance(scene, 0.05);
         ImportanceSolver solver(scene, mesh, SolverOptions{}, nullptr);
         // Some front face is in view: eye rays landed, so importance is positive somewhere.
         const auto& emitted = solver.emittedImportance();
@@ -80,7 +80,7 @@ TEST_CASE("importance refines on every built-in scene from its home view") {
 
 TEST_CASE("a view that sees no surface's front is an error, and setView keeps the previous view") {
     const Scene cube = makeUnitCube();
-    const PatchMesh mesh = meshAt(cube, 0.05);
+    const PatchMesh mesh = meshForImportance(cube, 0.05);
     SolverOptions outside;
     // Outside the closed cube, looking at it: every eye ray hits a wall's back.
     outside.view = View{{0.5, 0.5, -3.0}, {0.5, 0.5, 0.5}, {0, 1, 0}, 0.6, 1.0};
@@ -98,7 +98,7 @@ TEST_CASE("a view that sees no surface's front is an error, and setView keeps th
 
 TEST_CASE("setView moves the refinement to what the new camera sees") {
     const Scene cube = makeUnitCube();
-    const PatchMesh mesh = meshAt(cube, 0.05);
+    const PatchMesh mesh = meshForImportance(cube, 0.05);
     const std::size_t floor = cube.findSurface("floor");
     // From just below the ceiling looking down at the floor, then from near wall +z across at wall -z.
     const View atFloor{{0.5, 0.9, 0.5}, {0.5, 0.0, 0.5}, {0, 0, 1}, 1.0, 1.0};
@@ -124,13 +124,13 @@ TEST_CASE("setView moves the refinement to what the new camera sees") {
 
 TEST_CASE("unit cube, rho 0.5, 0.01 m^2: importance from the home view agrees with Gauss-Seidel") {
     const Scene cube = makeUnitCube();
-    const PatchMesh mesh = meshAt(cube, 0.01);
+    const PatchMesh mesh = meshForImportance(cube, 0.01);
     auto reference = makeSolver(SolverMethod::GaussSeidel, cube, mesh);
-    solveTo(*reference, 1e-9, 1000);
+    solveImportanceTo(*reference, 1e-9, 1000);
     ImportanceSolver solver(cube, mesh, SolverOptions{}, nullptr);
-    solveTo(solver, 1e-6, 1000);
-    const std::vector<double> expected = surfaceMeans(mesh, reference->solution());
-    const std::vector<double> got = surfaceMeans(mesh, solver.solution());
+    solveImportanceTo(solver, 1e-6, 1000);
+    const std::vector<double> expected = importanceSurfaceMeans(mesh, reference->solution());
+    const std::vector<double> got = importanceSurfaceMeans(mesh, solver.solution());
     for (std::size_t s = 0; s < cube.surfaces.size(); ++s) {
         CAPTURE(cube.surfaces[s].name);
         MESSAGE(cube.surfaces[s].name, ": importance ", got[s], ", Gauss-Seidel ", expected[s]);
@@ -149,7 +149,7 @@ TEST_CASE("Cornell box at the defaults: the short block's sides as the probe rea
     // Gauss-Seidel against the tracer, `radiant bench --only accuracy`), the tracer's standard error
     // at most 0.3%.
     const Scene scene = makeCornellBox();
-    const PatchMesh mesh = meshAt(scene, kSolveDefaults.maxPatchArea);
+    const PatchMesh mesh = meshForImportance(scene, kSolveDefaults.maxPatchArea);
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
     const PathTracer tracer(scene, rays);
@@ -172,7 +172,7 @@ TEST_CASE("Cornell box at the defaults: the short block's sides as the probe rea
         SolverOptions options;
         options.seed = seed;
         ImportanceSolver solver(scene, mesh, options, nullptr);
-        solveTo(solver, kSolveDefaults.tolerance, 200);
+        solveImportanceTo(solver, kSolveDefaults.tolerance, 200);
         for (std::size_t k = 0; k < sides.size(); ++k) {
             const Rgb got = probe.measure(sides[k].point, sides[k].normal, solver.solution()).radiosity.value();
             const Rgb expected = references[k].radiosity.value();

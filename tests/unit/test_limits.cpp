@@ -15,13 +15,14 @@
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/FormFactorMatrix.h"
 #include "radiometry/solver/FormFactorMatrixBudget.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 using namespace radiant::app;
 
 namespace {
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 /// A scene of one unit square (reflectance 0.5, exitance 1 W/m^2).
 std::shared_ptr<const Scene> unitSquare() {

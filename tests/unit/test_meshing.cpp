@@ -25,12 +25,7 @@ using radiant::test::sceneOf;
 
 namespace {
 
-double surfacePatchArea(const PatchMesh& mesh, std::size_t surface) {
-    double sum = 0;
-    for (std::size_t p = mesh.surfaceFirstPatch[surface]; p < mesh.surfaceFirstPatch[surface + 1]; ++p)
-        sum += mesh.patches[p].area;
-    return sum;
-}
+using radiant::test::surfacePatchArea;
 
 } // namespace
 

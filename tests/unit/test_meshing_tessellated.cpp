@@ -53,7 +53,7 @@ Scene boxWithFloor(std::vector<Face> floor) {
 }
 
 /// Gauss-Seidel's area-weighted mean radiosity (red band) of each surface, factors unoccluded.
-std::vector<double> surfaceMeans(const Scene& scene, const PatchMesh& mesh) {
+std::vector<double> tessellatedSurfaceMeans(const Scene& scene, const PatchMesh& mesh) {
     SolverOptions options;
     options.formFactors.visibilityRays = 0;  // a convex room: nothing in the way
     auto solver = makeGaussSeidelSolver(scene, mesh, computeFormFactorMatrix(scene, mesh, options, nullptr));
@@ -69,7 +69,7 @@ std::vector<double> surfaceMeans(const Scene& scene, const PatchMesh& mesh) {
     return means;
 }
 
-Scene loadGrouping(const std::string& file) {
+Scene loadTessellated(const std::string& file) {
     return loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/" + file).scene;
 }
 
@@ -150,8 +150,8 @@ TEST_CASE("a floor of uneven triangles gives what the same floor as one quad giv
     MESSAGE("floor: " << patchesOf(tessellatedMesh, 0) << " patches from triangles, " << patchesOf(wholeMesh, 0)
                       << " from one quad");
     CHECK(static_cast<double>(patchesOf(tessellatedMesh, 0)) < 2 * 4 / maxArea);
-    const std::vector<double> fromTriangles = surfaceMeans(tessellated, tessellatedMesh);
-    const std::vector<double> fromQuad = surfaceMeans(whole, wholeMesh);
+    const std::vector<double> fromTriangles = tessellatedSurfaceMeans(tessellated, tessellatedMesh);
+    const std::vector<double> fromQuad = tessellatedSurfaceMeans(whole, wholeMesh);
     for (std::size_t s = 0; s < fromQuad.size(); ++s) {
         CAPTURE(tessellated.surfaces[s].name);
         MESSAGE(tessellated.surfaces[s].name << ": " << fromTriangles[s] << " from triangles, " << fromQuad[s] << " from one quad");
@@ -160,7 +160,7 @@ TEST_CASE("a floor of uneven triangles gives what the same floor as one quad giv
 }
 
 TEST_CASE("rounded cube of 3,072 triangles: patches follow the requested area, closed and conforming") {
-    const Scene scene = loadGrouping("rounded_cube_room.gltf");
+    const Scene scene = loadTessellated("rounded_cube_room.gltf");
     const std::size_t cube = scene.findSurface("rounded cube");
     REQUIRE(cube != Scene::npos);
     const double area = scene.surfaces[cube].area();
@@ -189,7 +189,7 @@ TEST_CASE("rounded cube of 3,072 triangles: patches follow the requested area, c
 TEST_CASE("furnace inside a tessellated sphere with stitched triangles: B = E / (1 - rho) on every patch") {
     // The UV sphere's triangles run from 0.004 m^2 at the poles to 0.019 m^2 at the equator: at
     // 0.01 m^2 the large ones are cut in four and their smaller neighbours stitched to them.
-    const Scene scene = loadGrouping("furnace_sphere.gltf");
+    const Scene scene = loadTessellated("furnace_sphere.gltf");
     const double maxArea = 0.01;
     const PatchMesh mesh = meshScene(scene, {maxArea});
     REQUIRE(mesh.size() > scene.faceCount());

@@ -37,7 +37,7 @@ Scene loadGrouping(const std::string& file) {
     return loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/" + file).scene;
 }
 
-PatchMesh meshAt(const Scene& scene, double area) {
+PatchMesh meshPatchGroups(const Scene& scene, double area) {
     MeshingOptions options;
     options.maxPatchArea = area;
     return meshScene(scene, options);
@@ -170,7 +170,7 @@ TEST_CASE("rounded cube and sphere of thousands of triangles: groups follow the 
             const std::string file = c.file;
             CAPTURE(file);
             CAPTURE(area);
-            const PatchMesh mesh = meshAt(scene, area);
+            const PatchMesh mesh = meshPatchGroups(scene, area);
             const PatchGroups groups = groupAt(mesh, area);
             checkPartition(mesh, groups, area);
             const double total = radiant::test::surfacePatchArea(mesh, surface);
@@ -191,7 +191,7 @@ TEST_CASE("rounded cube and sphere of thousands of triangles: groups follow the 
 
 TEST_CASE("groups stop at creases and at a spread of normals") {
     const Scene scene = loadGrouping("cylinder_room.gltf");
-    const PatchMesh mesh = meshAt(scene, 1.0);
+    const PatchMesh mesh = meshPatchGroups(scene, 1.0);
     const PatchGroups groups = groupAt(mesh, 10.0);
     checkPartition(mesh, groups, 10.0);
     const std::size_t cylinder = scene.findSurface("cylinder");
@@ -212,7 +212,7 @@ TEST_CASE("groups stop at creases and at a spread of normals") {
 
 TEST_CASE("ungrouped patches are the patch system itself") {
     const Scene scene = loadGrouping("sphere_room.gltf");
-    const PatchMesh mesh = meshAt(scene, 0.5);
+    const PatchMesh mesh = meshPatchGroups(scene, 0.5);
     const PatchGroups groups = ungroupedPatches(mesh);
     checkPartition(mesh, groups, 0.5);
     CHECK(groups.size() == mesh.size());
@@ -220,7 +220,7 @@ TEST_CASE("ungrouped patches are the patch system itself") {
 
 TEST_CASE("furnace inside a grouped tessellated sphere: B = E / (1 - rho) on every patch") {
     const Scene scene = loadGrouping("furnace_sphere.gltf");  // radius 1: 12.6 m^2 in 960 triangles
-    const PatchMesh mesh = meshAt(scene, 1.0);
+    const PatchMesh mesh = meshPatchGroups(scene, 1.0);
     auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 1.0));
     CHECK(static_cast<double>(groups->size()) <= 2 * 4 * 3.14159265 / 1.0);
     checkGroupedFurnace(scene, mesh, groups, 0.5);
@@ -228,7 +228,7 @@ TEST_CASE("furnace inside a grouped tessellated sphere: B = E / (1 - rho) on eve
 
 TEST_CASE("furnace inside a grouped bevelled box: B = E / (1 - rho) on every patch") {
     const Scene scene = loadGrouping("bevelled_box_furnace.gltf");
-    const PatchMesh mesh = meshAt(scene, 0.2);
+    const PatchMesh mesh = meshPatchGroups(scene, 0.2);
     auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 0.2));
     checkGroupedFurnace(scene, mesh, groups, 0.5);
 }
@@ -236,14 +236,14 @@ TEST_CASE("furnace inside a grouped bevelled box: B = E / (1 - rho) on every pat
 TEST_CASE("grouped progressive refinement: furnaces inside the grouped sphere and bevelled box give B = E / (1 - rho)") {
     {
         const Scene scene = loadGrouping("furnace_sphere.gltf");
-        const PatchMesh mesh = meshAt(scene, 1.0);
+        const PatchMesh mesh = meshPatchGroups(scene, 1.0);
         auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 1.0));
         checkProgressiveFurnace(scene, mesh, groups, 0.5, 0);
         checkProgressiveFurnace(scene, mesh, groups, 0.5, 16);
     }
     {
         const Scene scene = loadGrouping("bevelled_box_furnace.gltf");
-        const PatchMesh mesh = meshAt(scene, 0.2);
+        const PatchMesh mesh = meshPatchGroups(scene, 0.2);
         auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, 0.2));
         checkProgressiveFurnace(scene, mesh, groups, 0.5, 0);
         checkProgressiveFurnace(scene, mesh, groups, 0.5, 16);
@@ -254,7 +254,7 @@ TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over t
     const Scene scene = loadGrouping("sphere_room.gltf");
     const std::size_t sphere = scene.findSurface("sphere");
     const double area = 0.25;
-    const PatchMesh mesh = meshAt(scene, area);
+    const PatchMesh mesh = meshPatchGroups(scene, area);
     auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, area));
     SolverOptions options;
     options.formFactors.visibilityRays = 4;  // the sphere shadows the floor

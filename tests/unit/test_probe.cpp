@@ -29,11 +29,12 @@
 #include "radiometry/probe/RadiosityInterpolation.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "tests/support/CatalogViewFactors.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using radiant::test::kPi;
 
 using test::cornerRectangleSolidAngle;
 using test::overRectangle;
@@ -66,7 +67,7 @@ Scene parallelSquares(double h, std::optional<double> blockerEdge = std::nullopt
     return scene;
 }
 
-MeshingOptions meshing(double maxPatchArea) {
+MeshingOptions probeMeshing(double maxPatchArea) {
     MeshingOptions options;
     options.maxPatchArea = maxPatchArea;
     return options;
@@ -91,7 +92,7 @@ TEST_CASE("on parallel squares the probe's F, solid angle and E match the corner
             CAPTURE(x.y);
             const Scene scene = parallelSquares(h);
             REQUIRE(scene.surfaces[1].faces[0].normal.z == doctest::Approx(-1.0).scale(0));
-            const PatchMesh mesh = meshScene(scene, meshing(0.01));
+            const PatchMesh mesh = meshScene(scene, probeMeshing(0.01));
             const RayCaster rays(scene);
             const Probe probe(scene, mesh, &rays);
             const ProbeReading r = probe.measure(x, {0, 0, 1}, emitterOnly(mesh, 1), std::size_t{1});
@@ -138,7 +139,7 @@ TEST_CASE("a closed block counts its silhouette once, and a target seen from beh
     scene.surfaces.push_back(block);
     for (const Face& face : scene.surfaces[1].faces)  // outward: away from the cube's centre
         REQUIRE(glm::dot(face.normal, face.vertices[0] - glm::dvec3(0, 0, h + a)) > 0);
-    const PatchMesh mesh = meshScene(scene, meshing(0.02));
+    const PatchMesh mesh = meshScene(scene, probeMeshing(0.02));
     const RayCaster rays(scene);
     const Probe probe(scene, mesh, &rays);
     const std::vector<Rgb> dark(mesh.size(), Rgb(0.0));
@@ -157,7 +158,7 @@ TEST_CASE("a closed block counts its silhouette once, and a target seen from beh
     Scene behind = parallelSquares(h);
     behind.surfaces[1].name = "panel";
     behind.surfaces[1].faces[0] = rectangleFace({{{-a, -a, h}, {a, -a, h}, {a, a, h}, {-a, a, h}}});  // faces +z
-    const PatchMesh behindMesh = meshScene(behind, meshing(0.02));
+    const PatchMesh behindMesh = meshScene(behind, probeMeshing(0.02));
     const RayCaster behindRays(behind);
     const Probe behindProbe(behind, behindMesh, &behindRays);
     const ProbeReading b =
@@ -178,7 +179,7 @@ TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
             CAPTURE(h);
             CAPTURE(e);
             const Scene scene = parallelSquares(h, e);
-            const PatchMesh mesh = meshScene(scene, meshing(0.01));
+            const PatchMesh mesh = meshScene(scene, probeMeshing(0.01));
             const RayCaster rays(scene);
             const Probe probe(scene, mesh, &rays);
             const ProbeReading r = probe.measure(glm::dvec3(0.0), glm::dvec3(0, 0, 1), emitterOnly(mesh, 1), std::size_t{1});
@@ -195,7 +196,7 @@ TEST_CASE("a blocker halfway up hides the part of the emitter behind it") {
 
 TEST_CASE("radiosity interpolation reproduces a linear field inside a surface") {
     const Scene scene = parallelSquares(1.0);
-    const PatchMesh mesh = meshScene(scene, meshing(0.01));
+    const PatchMesh mesh = meshScene(scene, probeMeshing(0.01));
     const auto field = [](const glm::dvec3& p) { return Rgb(1 + 2 * p.x, 3 - p.y, 0.5 + p.x + p.y); };
     std::vector<Rgb> b(mesh.size(), Rgb(0.0));
     for (std::size_t p = 0; p < mesh.size(); ++p)
@@ -231,7 +232,7 @@ TEST_CASE("radiosity does not bleed around a crease of one surface") {
     REQUIRE(floor.normal.y == doctest::Approx(1.0).scale(0));
     REQUIRE(wall.normal.z == doctest::Approx(1.0).scale(0));
     scene.surfaces.push_back({"fold", 0, {floor, wall}, "test"});
-    const PatchMesh mesh = meshScene(scene, meshing(0.04));
+    const PatchMesh mesh = meshScene(scene, probeMeshing(0.04));
     std::vector<Rgb> b(mesh.size());
     for (std::size_t p = 0; p < mesh.size(); ++p) b[p] = Rgb(mesh.patches[p].face == 0 ? 1.0 : 5.0);
     const Probe probe(scene, mesh, nullptr);
@@ -243,7 +244,7 @@ TEST_CASE("radiosity does not bleed around a crease of one surface") {
 
 TEST_CASE("a point off every surface or a normal into the surface is refused") {
     const Scene scene = parallelSquares(1.0);
-    const PatchMesh mesh = meshScene(scene, meshing(0.05));
+    const PatchMesh mesh = meshScene(scene, probeMeshing(0.05));
     const Probe probe(scene, mesh, nullptr);
     CHECK_THROWS_AS((void)probe.locate({0, 0, 0.3}, {0, 0, 1}), RadiantError);
     CHECK_THROWS_AS((void)probe.locate({0.7, 0, 0}, {0, 0, 1}), RadiantError);

@@ -33,7 +33,7 @@ namespace {
 
 
 
-Face faceFacing(std::vector<glm::dvec3> corners, const glm::dvec3& inside) {
+Face inwardFace(std::vector<glm::dvec3> corners, const glm::dvec3& inside) {
     Face face;
     face.vertices = std::move(corners);
     face.updateGeometry();
@@ -45,7 +45,7 @@ Face faceFacing(std::vector<glm::dvec3> corners, const glm::dvec3& inside) {
 }
 
 /// [0,w] x [0,h] x [0,d] seen from inside, surfaces x=0, x=w, y=0, y=h, z=0, z=d, all of one material.
-Scene closedBox(double w, double h, double d, const Material& material) {
+Scene greyClosedBox(double w, double h, double d, const Material& material) {
     Scene scene;
     scene.name = "progressive test box";
     scene.materials = {material};
@@ -55,17 +55,17 @@ Scene closedBox(double w, double h, double d, const Material& material) {
         {{0, 0, 0}, {w, 0, 0}, {w, 0, d}, {0, 0, d}}, {{0, h, 0}, {w, h, 0}, {w, h, d}, {0, h, d}},
         {{0, 0, 0}, {w, 0, 0}, {w, h, 0}, {0, h, 0}}, {{0, 0, d}, {w, 0, d}, {w, h, d}, {0, h, d}}};
     for (std::size_t f = 0; f < faces.size(); ++f)
-        scene.surfaces.push_back({"face " + std::to_string(f), 0, {faceFacing(faces[f], centre)}, "test"});
+        scene.surfaces.push_back({"face " + std::to_string(f), 0, {inwardFace(faces[f], centre)}, "test"});
     return scene;
 }
 
-PatchMesh meshAt(const Scene& scene, double maxPatchArea) {
+PatchMesh meshForProgressive(const Scene& scene, double maxPatchArea) {
     MeshingOptions options;
     options.maxPatchArea = maxPatchArea;
     return meshScene(scene, options);
 }
 
-std::vector<Rgb> surfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) {
+std::vector<Rgb> progressiveSurfaceMeans(const PatchMesh& mesh, const std::vector<Rgb>& B) {
     std::vector<Rgb> means;
     for (std::size_t s = 0; s + 1 < mesh.surfaceFirstPatch.size(); ++s) {
         Rgb power(0.0);
@@ -113,7 +113,7 @@ PatchAgreement patchAgreement(const Scene& scene, const PatchMesh& mesh, const s
     return agreement;
 }
 
-void solveTo(Solver& solver, double residual, std::size_t maxSteps = 100000) {
+void solveProgressiveTo(Solver& solver, double residual, std::size_t maxSteps = 100000) {
     for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
     REQUIRE(solver.lastStats().residual <= residual);
 }
@@ -154,7 +154,7 @@ TEST_CASE("block shooters cover every patch once with blocks of one face whose o
     // Without the blocks: their footprints cut the floor into pieces (ContactCuts.h) too small to block.
     Scene cornell = makeCornellBox();
     std::erase_if(cornell.surfaces, [](const Surface& s) { return s.name.find("block") != std::string::npos; });
-    const PatchMesh mesh = meshAt(cornell, 0.002);
+    const PatchMesh mesh = meshForProgressive(cornell, 0.002);
     for (const std::size_t block : {std::size_t{1}, std::size_t{2}, std::size_t{3}, std::size_t{5}}) {
         CAPTURE(block);
         const ProgressiveShooters shooters = blockShooters(mesh, block);
@@ -190,8 +190,8 @@ TEST_CASE("block shooters' form factors match the box face-to-face closed forms"
     for (const auto& values : {std::array{1.0, 1.0, 1.0}, std::array{2.0, 1.0, 0.5}}) {
         const double w = values[0], h = values[1], d = values[2];  // not a structured binding: clang 14 cannot CAPTURE those
         CAPTURE(w);
-        const Scene box = closedBox(w, h, d, {"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
-        const PatchMesh mesh = meshAt(box, (w * h + h * d + w * d) / 150);
+        const Scene box = greyClosedBox(w, h, d, {"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
+        const PatchMesh mesh = meshForProgressive(box, (w * h + h * d + w * d) / 150);
         const ProgressiveShooters shooters = blockShooters(mesh, 3);
         REQUIRE(shooters.size() < mesh.size() / 4);
         const ShotFormFactors shot = makeRayCastShotFormFactors(box, mesh, shooters, {});
@@ -206,8 +206,8 @@ TEST_CASE("block shooters' form factors match the box face-to-face closed forms"
 
 TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflectance is edited mid-solve") {
     const Material wall{"wall", Rgb(0.6), ExitanceRgb(Rgb(1.0, 2.0, 3.0))};
-    const Scene box = closedBox(1.0, 0.8, 1.2, wall);
-    const PatchMesh mesh = meshAt(box, 0.01);
+    const Scene box = greyClosedBox(1.0, 0.8, 1.2, wall);
+    const PatchMesh mesh = meshForProgressive(box, 0.01);
     ProgressiveOptions progressive;
     progressive.shooterBlock = 3;
     auto solver = makeProgressiveSolver(box, mesh, SolverOptions{}, progressive);
@@ -229,12 +229,12 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
             CHECK(B.z == doctest::Approx(3.0 / (1 - rho)).epsilon(tolerance).scale(0));
         }
     };
-    solveTo(*solver, 1e-6);
+    solveProgressiveTo(*solver, 1e-6);
     check(0.6);
     // Darker walls: the change is shot as negative light (Chen 1990) until the new furnace value.
     for (std::size_t s = 0; s < box.surfaces.size(); ++s) solver->setMaterial(s, Rgb(0.3), ExitanceRgb(Rgb(1.0, 2.0, 3.0)));
     CHECK(solver->lastStats().residual > 1e-2);
-    solveTo(*solver, 1e-6);
+    solveProgressiveTo(*solver, 1e-6);
     check(0.3);
 }
 
@@ -250,12 +250,12 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
     // patch mean 0.88% / 1.2% / 1.3% for blocks 2 / 3 / 4; the worst single patch, 14-26%, is the
     // weak shots' few-ray visibility noise, as with every patch shooting alone (next test).
     const Scene cornell = makeCornellBox();
-    const PatchMesh mesh = meshAt(cornell, 0.004);
+    const PatchMesh mesh = meshForProgressive(cornell, 0.004);
     SolverOptions fine;
     fine.formFactors.visibilityRays = 64;  // the reference's own penumbra noise well below the bounds
     auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh, fine);
-    solveTo(*reference, 1e-9);
-    const std::vector<Rgb> expected = surfaceMeans(mesh, reference->solution());
+    solveProgressiveTo(*reference, 1e-9);
+    const std::vector<Rgb> expected = progressiveSurfaceMeans(mesh, reference->solution());
     // The default shooter count gives blocks of 3 at this mesh (78 shooters).
     for (const std::size_t block : {std::size_t{2}, std::size_t{3}, std::size_t{4}}) {
         CAPTURE(block);
@@ -263,8 +263,8 @@ TEST_CASE("Cornell box: converged block shooters match Gauss-Seidel per surface 
         progressive.shooterBlock = block;
         auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, progressive);
         REQUIRE(solver->shooters().size() * 2 < mesh.size());
-        solveTo(*solver, 1e-4, 20000);
-        const std::vector<Rgb> means = surfaceMeans(mesh, solver->solution());
+        solveProgressiveTo(*solver, 1e-4, 20000);
+        const std::vector<Rgb> means = progressiveSurfaceMeans(mesh, solver->solution());
         double worstSurface = 0;
         for (std::size_t s = 0; s < means.size(); ++s)
             for (int band = 0; band < 3; ++band)
@@ -287,15 +287,15 @@ TEST_CASE("Cornell box: converged progressive refinement matches Gauss-Seidel pa
     // patches: mean 0.58%, worst 14.7% (a floor patch by the front edge); with 16 + 64 rays for
     // every shot 0.65% / 10.6%.
     const Scene cornell = makeCornellBox();
-    const PatchMesh mesh = meshAt(cornell, 0.004);
+    const PatchMesh mesh = meshForProgressive(cornell, 0.004);
     SolverOptions fine;
     fine.formFactors.visibilityRays = 64;  // the reference's own penumbra noise well below the bound
     auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh, fine);
-    solveTo(*reference, 1e-9);
+    solveProgressiveTo(*reference, 1e-9);
     ProgressiveOptions eachPatch;
     eachPatch.shooterBlock = 1;
     auto solver = makeProgressiveSolver(cornell, mesh, SolverOptions{}, eachPatch);
-    solveTo(*solver, 1e-5, 20000);
+    solveProgressiveTo(*solver, 1e-5, 20000);
     const PatchAgreement patches = patchAgreement(cornell, mesh, solver->solution(), reference->solution());
     MESSAGE("patches ", patches.counted, " of ", mesh.size(), ": mean ", patches.mean, ", worst ", patches.worst, " on ",
             patches.worstSurface);
@@ -306,7 +306,7 @@ TEST_CASE("Cornell box: converged progressive refinement matches Gauss-Seidel pa
 
 TEST_CASE("block shooting is deterministic for a seed and reports a member of the shot group") {
     const Scene cornell = makeCornellBox();
-    const PatchMesh mesh = meshAt(cornell, 0.003);
+    const PatchMesh mesh = meshForProgressive(cornell, 0.003);
     ProgressiveOptions progressive;
     progressive.shooterBlock = 3;
     SolverOptions options;

@@ -44,7 +44,7 @@ FaceAgreement faceAgreement(const PatchMesh& mesh, std::size_t surface, std::uin
     return agreement;
 }
 
-void solveTo(Solver& solver, double residual, std::size_t maxSteps = 200000) {
+void solveGapTo(Solver& solver, double residual, std::size_t maxSteps = 200000) {
     for (std::size_t k = 0; k < maxSteps && solver.lastStats().residual > residual; ++k) solver.step();
     REQUIRE(solver.lastStats().residual <= residual);
 }
@@ -66,7 +66,7 @@ struct GapFixture {
         SolverOptions options;
         options.rays = rays;
         auto reference = makeSolver(SolverMethod::GaussSeidel, cornell, mesh, options);
-        solveTo(*reference, 1e-8);
+        solveGapTo(*reference, 1e-8);
         converged = reference->solution();
         shortBlock = cornell.findSurface("short block");
         tallBlock = cornell.findSurface("tall block");
@@ -91,7 +91,7 @@ GapAgreement progressiveInTheGap(std::size_t block) {
     ProgressiveOptions progressive;
     progressive.shooterBlock = block;
     auto solver = makeProgressiveSolver(f.cornell, f.mesh, options, progressive);
-    solveTo(*solver, kSolveDefaults.tolerance);
+    solveGapTo(*solver, kSolveDefaults.tolerance);
     GapAgreement agreement;
     // The short block's face 3 (towards the tall block) and the tall block's face 1 (its front).
     agreement.shortSide = faceAgreement(f.mesh, f.shortBlock, 3, solver->solution(), f.converged);

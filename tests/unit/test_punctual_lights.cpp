@@ -32,6 +32,8 @@
 #include "radiometry/units/Photometry.h"
 #include "tests/support/Relative.h"
 #include "tests/support/RunRadiant.h"
+#include "tests/support/Common.h"
+#include "tests/support/CatalogViewFactors.h"
 
 using namespace radiant;
 using radiant::test::relativeTo;
@@ -41,7 +43,7 @@ namespace {
 
 std::string lightFile(const std::string& name) { return std::string(RADIANT_TEST_DATA_DIR) + "/lights/" + name; }
 
-constexpr std::array kMethods{SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
+constexpr std::array kLightMethods{SolverMethod::Jacobi, SolverMethod::GaussSeidel, SolverMethod::Progressive,
                               SolverMethod::Hierarchical, SolverMethod::Importance};
 
 // The rooms' bulb: 179 cd of white light, 1 W/sr per band, at (0.5, 2, 0).
@@ -49,9 +51,7 @@ constexpr double kBulbIntensity = 1.0;
 const glm::dvec3 kBulb{0.5, 2, 0};
 
 /// Solid angle of an a x b rectangle seen from height h above one corner (docs/reference.md).
-double cornerRectangleSolidAngle(double a, double b, double h) {
-    return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h)));
-}
+using radiant::test::cornerRectangleSolidAngle;
 
 /// The room's 4 m x 4 m floor from the bulb: four rectangles meeting below it.
 double floorSolidAngleFromBulb() {
@@ -88,7 +88,7 @@ struct Solution {
     }
 };
 
-Solution solve(const std::string& file, SolverMethod method, double maxPatchArea = 0.25) {
+Solution solveLitScene(const std::string& file, SolverMethod method, double maxPatchArea = 0.25) {
     Solution s{loadScene(lightFile(file)).scene, {}, {}};
     s.mesh = meshScene(s.scene, MeshingOptions{maxPatchArea});
     const auto solver = makeSolver(method, s.scene, s.mesh);
@@ -104,7 +104,7 @@ Solution solve(const std::string& file, SolverMethod method, double maxPatchArea
 using Run = test::CommandRun;
 using test::runRadiant;
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 /// The black room's glTF with `edit` applied, loaded from memory (its buffers are data: URIs).
 template <class Edit>
@@ -118,7 +118,7 @@ LoadedScene loadEdited(Edit&& edit) {
 
 /// The one-line error loading the edited file gives; empty when it loads.
 template <class Edit>
-std::string loadError(Edit&& edit) {
+std::string editedLoadError(Edit&& edit) {
     try {
         (void)loadEdited(std::forward<Edit>(edit));
     } catch (const RadiantError& error) {
@@ -127,11 +127,7 @@ std::string loadError(Edit&& edit) {
     return {};
 }
 
-bool anyContains(const std::vector<std::string>& lines, const std::string& part) {
-    for (const std::string& line : lines)
-        if (contains(line, part)) return true;
-    return false;
-}
+using radiant::test::anyContains;
 
 } // namespace
 
@@ -183,15 +179,15 @@ TEST_CASE("a bad light is refused in one line naming it, and one that gives no l
         CHECK(contains(message, part));
         CHECK(!contains(message, "\n"));
     };
-    refused(loadError([&](nlohmann::json& d) { light(d)["intensity"] = -1; }), "light 0 'Bulb': intensity -1 must be a finite value >= 0 (cd)");
-    refused(loadError([&](nlohmann::json& d) { light(d)["color"] = {1, 1}; }), "light 0 'Bulb': color has 2 values, expected 3");
-    refused(loadError([&](nlohmann::json& d) { light(d)["color"] = {1, -0.5, 1}; }), "color band 1 is -0.5, expected >= 0");
-    refused(loadError([&](nlohmann::json& d) {
+    refused(editedLoadError([&](nlohmann::json& d) { light(d)["intensity"] = -1; }), "light 0 'Bulb': intensity -1 must be a finite value >= 0 (cd)");
+    refused(editedLoadError([&](nlohmann::json& d) { light(d)["color"] = {1, 1}; }), "light 0 'Bulb': color has 2 values, expected 3");
+    refused(editedLoadError([&](nlohmann::json& d) { light(d)["color"] = {1, -0.5, 1}; }), "color band 1 is -0.5, expected >= 0");
+    refused(editedLoadError([&](nlohmann::json& d) {
                 light(d)["type"] = "spot";
                 light(d)["spot"] = {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.5}};
             }),
             "spot cone angles inner 0.6 and outer 0.5 rad must satisfy 0 <= inner < outer <= pi/2");
-    refused(loadError([](nlohmann::json& d) { d["nodes"].back()["extensions"]["KHR_lights_punctual"]["light"] = 3; }),
+    refused(editedLoadError([](nlohmann::json& d) { d["nodes"].back()["extensions"]["KHR_lights_punctual"]["light"] = 3; }),
             "KHR_lights_punctual light 3 out of range (light count 1)");
 
     const LoadedScene dark = loadEdited([&](nlohmann::json& d) { light(d)["intensity"] = 0; });
@@ -225,9 +221,9 @@ TEST_CASE("a Blender point lamp's 'watt' arrives as 683/179 W of white light") {
 }
 
 TEST_CASE("a black room lit by a point light: every method's probe reads E = I cos(theta) / r^2") {
-    for (const SolverMethod method : kMethods) {
+    for (const SolverMethod method : kLightMethods) {
         CAPTURE(methodName(method));
-        const Solution s = solve("point_black_room.gltf", method);
+        const Solution s = solveLitScene("point_black_room.gltf", method);
         CHECK(s.totalPower() == 0.0);  // nothing reflects
         for (const auto& at : {std::pair{glm::dvec3(0, 0, 0), glm::dvec3(0, 1, 0)},
                                std::pair{glm::dvec3(-1, 0, 1), glm::dvec3(0, 1, 0)},
@@ -247,9 +243,9 @@ TEST_CASE("a black room lit by a point light: every method's probe reads E = I c
 
 TEST_CASE("only the floor reflects: every method gives it rho I Omega, and rho E at its centre") {
     const double expectedPower = 0.5 * kBulbIntensity * floorSolidAngleFromBulb();
-    for (const SolverMethod method : kMethods) {
+    for (const SolverMethod method : kLightMethods) {
         CAPTURE(methodName(method));
-        const Solution s = solve("point_grey_floor.gltf", method);
+        const Solution s = solveLitScene("point_grey_floor.gltf", method);
         const std::size_t floor = s.scene.findSurface("Floor");
         REQUIRE(floor != Scene::npos);
         CHECK(s.power(floor) == relativeTo(expectedPower, 0.003));
@@ -264,15 +260,15 @@ TEST_CASE("a closed grey room absorbs all of the bulb's power: every method, eac
     const double expectedPower = 0.5 / (1 - 0.5) * 4 * std::numbers::pi * kBulbIntensity;
     std::vector<double> floorE;
     Scene scene;
-    for (const SolverMethod method : kMethods) {
+    for (const SolverMethod method : kLightMethods) {
         CAPTURE(methodName(method));
-        const Solution s = solve("point_grey_room.gltf", method);
+        const Solution s = solveLitScene("point_grey_room.gltf", method);
         CHECK(s.totalPower() == relativeTo(expectedPower, 0.01));
         floorE.push_back(s.probe({-1, 0, 1}, {0, 1, 0}).irradiance.value().y);
         scene = s.scene;
     }
     for (std::size_t m = 1; m < floorE.size(); ++m) {
-        CAPTURE(methodName(kMethods[m]));
+        CAPTURE(methodName(kLightMethods[m]));
         CHECK(floorE[m] == relativeTo(floorE[0], 0.02));
     }
     // The tracer shares nothing with the solvers but the scene, the ray caster and the lights' NEE.
@@ -285,13 +281,13 @@ TEST_CASE("a closed grey room absorbs all of the bulb's power: every method, eac
     const ReferenceEstimate reference = run.runUntil(stop);
     const double tolerance = 3 * reference.irradianceStandardError.y + 0.01 * reference.irradiance.value().y;
     for (std::size_t m = 0; m < floorE.size(); ++m) {
-        CAPTURE(methodName(kMethods[m]));
+        CAPTURE(methodName(kLightMethods[m]));
         CHECK(std::abs(floorE[m] - reference.irradiance.value().y) <= tolerance);
     }
 }
 
 TEST_CASE("a spot lights its cone by glTF's smooth falloff and nothing beyond it") {
-    const Solution s = solve("spot_floor.gltf", SolverMethod::GaussSeidel, 1.0);
+    const Solution s = solveLitScene("spot_floor.gltf", SolverMethod::GaussSeidel, 1.0);
     const double cosInner = std::cos(0.3), cosOuter = std::cos(0.5);
     for (const double angle : {0.0, 0.2, 0.35, 0.45, 0.6}) {
         CAPTURE(angle);
@@ -311,7 +307,7 @@ TEST_CASE("a sun gives E cos(theta) wherever nothing shades it, and its shadow g
     const double normal = 1000.0 / 179.0, cos60 = 0.5;
     for (const SolverMethod method : {SolverMethod::GaussSeidel, SolverMethod::Hierarchical}) {
         CAPTURE(methodName(method));
-        const Solution s = solve("sun_floor.gltf", method, 0.25);
+        const Solution s = solveLitScene("sun_floor.gltf", method, 0.25);
         CHECK(s.probe({3, 0, 0}, {0, 1, 0}).directIrradiance.value().x == relativeTo(normal * cos60, 1e-9));
         CHECK(s.probe({0.5, 0, 0}, {0, 1, 0}).directIrradiance.value().x == relativeTo(normal * cos60, 1e-9));
         CHECK(s.probe({0, 1, 0}, {0, 1, 0}).directIrradiance.value().x == relativeTo(normal * cos60, 1e-9));  // the roof

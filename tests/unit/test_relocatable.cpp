@@ -11,22 +11,24 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "tests/support/Common.h"
+
 namespace fs = std::filesystem;
 
 namespace {
 
-struct Run {
+struct InstalledRun {
     int status = -1;
     std::string output;
 };
 
 /// Runs a command from `folder` (so the current directory cannot be what finds the scenes),
 /// standard error with standard output.
-Run runIn(const fs::path& folder, const std::string& command) {
+InstalledRun runIn(const fs::path& folder, const std::string& command) {
     const std::string line = "cd '" + folder.string() + "' && " + command + " 2>&1";
     FILE* pipe = popen(line.c_str(), "r");
     REQUIRE(pipe);
-    Run run;
+    InstalledRun run;
     std::array<char, 512> chunk{};
     while (std::fgets(chunk.data(), static_cast<int>(chunk.size()), pipe)) run.output += chunk.data();
     const int status = pclose(pipe);
@@ -50,7 +52,7 @@ struct TemporaryFolder {
     TemporaryFolder& operator=(const TemporaryFolder&) = delete;
 };
 
-bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+using radiant::test::contains;
 
 } // namespace
 
@@ -65,13 +67,13 @@ TEST_CASE("an installed copy finds its built-in scenes in ../share/radiant/asset
     fs::create_directories(prefix.path / "elsewhere");
     const std::string program = "'" + (prefix.path / "bin" / "radiant").string() + "'";
 
-    const Run cube = runIn(prefix.path / "elsewhere", program + " solve unit-cube --max-patch-area 0.05 --json -");
+    const InstalledRun cube = runIn(prefix.path / "elsewhere", program + " solve unit-cube --max-patch-area 0.05 --json -");
     INFO(cube.output);
     CHECK(cube.status == 0);
     CHECK(contains(cube.output, "\"scene\": \"unit-cube\""));
 
     // The Cornell box is in the source tree but not in this install: not found, one line, exit 2.
-    const Run box = runIn(prefix.path / "elsewhere", program + " solve cornell-box");
+    const InstalledRun box = runIn(prefix.path / "elsewhere", program + " solve cornell-box");
     INFO(box.output);
     CHECK(box.status == 2);
     CHECK(contains(box.output, "cornell-box.gltf"));
@@ -80,7 +82,7 @@ TEST_CASE("an installed copy finds its built-in scenes in ../share/radiant/asset
 TEST_CASE("a copy with no scenes beside it says where it looked, exit status 2") {
     const TemporaryFolder folder;
     fs::copy_file(RADIANT_BINARY, folder.path / "radiant");
-    const Run run = runIn(folder.path, "'" + (folder.path / "radiant").string() + "' solve unit-cube");
+    const InstalledRun run = runIn(folder.path, "'" + (folder.path / "radiant").string() + "' solve unit-cube");
     INFO(run.output);
     CHECK(run.status == 2);
     CHECK(contains(run.output, "the built-in scenes' folder was not found"));
@@ -89,7 +91,7 @@ TEST_CASE("a copy with no scenes beside it says where it looked, exit status 2")
 }
 
 TEST_CASE("radiant --version prints the project's version") {
-    const Run run = runIn(fs::temp_directory_path(), std::string("'") + RADIANT_BINARY + "' --version");
+    const InstalledRun run = runIn(fs::temp_directory_path(), std::string("'") + RADIANT_BINARY + "' --version");
     CHECK(run.status == 0);
     CHECK(run.output == std::string("radiant ") + RADIANT_VERSION + "\n");
 }

@@ -14,13 +14,14 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/solidangle/ClosedFormSolidAngles.h"
 #include "radiometry/solidangle/PolygonSolidAngle.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using radiant::test::kPi;
 
-double cornerRectangle(double a, double b, double h) {  // the oracle, written out in the test
+double cornerRectangleOracle(double a, double b, double h) {  // the oracle, written out in the test
     return std::atan(a * b / (h * std::sqrt(a * a + b * b + h * h)));
 }
 
@@ -39,14 +40,14 @@ TEST_CASE("a rectangle seen from above its corner matches the closed form to 1e-
                 CAPTURE(a);
                 CAPTURE(b);
                 CAPTURE(h);
-                const double expected = cornerRectangle(a, b, h);
+                const double expected = cornerRectangleOracle(a, b, h);
                 const auto polygon = rectangle(0, 0, a, b);
                 CHECK(signedPolygonSolidAngle({0, 0, h}, polygon).value() ==
                       doctest::Approx(expected).epsilon(1e-9).scale(0));
                 CHECK(cornerRectangleSolidAngle(Length(a), Length(b), Length(h)).value() ==
                       doctest::Approx(expected).epsilon(1e-12).scale(0));
             }
-    CHECK(cornerRectangle(1, 1, 1) == doctest::Approx(kPi / 6).epsilon(1e-14).scale(0));
+    CHECK(cornerRectangleOracle(1, 1, 1) == doctest::Approx(kPi / 6).epsilon(1e-14).scale(0));
 }
 
 TEST_CASE("a point above the inside, outside, or behind a rectangle: sums and differences of corners") {
@@ -54,15 +55,15 @@ TEST_CASE("a point above the inside, outside, or behind a rectangle: sums and di
     for (double h : {0.2, 1.0, 3.0}) {
         CAPTURE(h);
         // Above an interior point: four corner rectangles around the foot of the perpendicular.
-        const double inside = cornerRectangle(1.0, 0.5, h) + cornerRectangle(2.0, 0.5, h) +
-                              cornerRectangle(1.0, 1.5, h) + cornerRectangle(2.0, 1.5, h);
+        const double inside = cornerRectangleOracle(1.0, 0.5, h) + cornerRectangleOracle(2.0, 0.5, h) +
+                              cornerRectangleOracle(1.0, 1.5, h) + cornerRectangleOracle(2.0, 1.5, h);
         CHECK(signedPolygonSolidAngle({0, 0, h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9).scale(0));
         // From behind: the same magnitude, negative sign.
         CHECK(signedPolygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(-inside).epsilon(1e-9).scale(0));
         CHECK(polygonSolidAngle({0, 0, -h}, polygon).value() == doctest::Approx(inside).epsilon(1e-9).scale(0));
         // Above a point outside the rectangle (x = 3): the difference of two corner rectangles per side.
-        const double outside = cornerRectangle(4.0, 0.5, h) - cornerRectangle(1.0, 0.5, h) +
-                               cornerRectangle(4.0, 1.5, h) - cornerRectangle(1.0, 1.5, h);
+        const double outside = cornerRectangleOracle(4.0, 0.5, h) - cornerRectangleOracle(1.0, 0.5, h) +
+                               cornerRectangleOracle(4.0, 1.5, h) - cornerRectangleOracle(1.0, 1.5, h);
         CHECK(signedPolygonSolidAngle({3, 0, h}, polygon).value() == doctest::Approx(outside).epsilon(1e-9).scale(0));
     }
     // Very close above the inside, a large polygon fills nearly the whole hemisphere.
@@ -148,7 +149,7 @@ TEST_CASE("A/R^2 holds for a small far square and fails close up") {
     const double side = 1.0;
     double previousError = 1e9;
     for (double distance : {0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 64.0}) {
-        const double exact = 4 * cornerRectangle(side / 2, side / 2, distance);
+        const double exact = 4 * cornerRectangleOracle(side / 2, side / 2, distance);
         const double approximate = smallAreaSolidAngle(Area(side * side), Length(distance)).value();
         const double relativeError = std::abs(approximate - exact) / exact;
         CAPTURE(distance);

@@ -10,7 +10,7 @@ using namespace radiant::app;
 namespace {
 
 /// Step i (from 1) with fields that tell every entry apart.
-IterationStats step(std::size_t i) {
+IterationStats historyStep(std::size_t i) {
     IterationStats stats;
     stats.iteration = i;
     stats.residual = 1.0 / static_cast<double>(i);
@@ -18,11 +18,11 @@ IterationStats step(std::size_t i) {
     return stats;
 }
 
-void appendSteps(SolveHistoryBuilder& builder, std::size_t from, std::size_t to) {
-    for (std::size_t i = from; i <= to; ++i) builder.append(step(i));
+void appendHistorySteps(SolveHistoryBuilder& builder, std::size_t from, std::size_t to) {
+    for (std::size_t i = from; i <= to; ++i) builder.append(historyStep(i));
 }
 
-/// Every entry of `history` is step(index + 1).
+/// Every entry of `history` is historyStep(index + 1).
 bool holdsStepsInOrder(const SolveHistory& history) {
     for (std::size_t i = 0; i < history.size(); ++i)
         if (history[i].iteration != i + 1 || history[i].links != 2 * (i + 1) ||
@@ -38,7 +38,7 @@ TEST_SUITE("solve history") {
 TEST_CASE("solve history: entries read back in order across chunk boundaries") {
     static_assert(SolveHistory::kChunkSize < 2500 / 2, "the test must cross at least two chunk boundaries");
     SolveHistoryBuilder builder;
-    appendSteps(builder, 1, 2500);
+    appendHistorySteps(builder, 1, 2500);
     CHECK(builder.size() == 2500);
     const SolveHistory history = builder.snapshot();
     REQUIRE(history.size() == 2500);
@@ -53,7 +53,7 @@ TEST_CASE("solve history: entries read back in order across chunk boundaries") {
 
 TEST_CASE("solve history: a chunk exactly full is frozen, and back() reads it") {
     SolveHistoryBuilder builder;
-    appendSteps(builder, 1, SolveHistory::kChunkSize);
+    appendHistorySteps(builder, 1, SolveHistory::kChunkSize);
     const SolveHistory history = builder.snapshot();
     CHECK(history.size() == SolveHistory::kChunkSize);
     CHECK(history.frozenChunks().size() == 1);
@@ -63,9 +63,9 @@ TEST_CASE("solve history: a chunk exactly full is frozen, and back() reads it") 
 
 TEST_CASE("solve history: a snapshot is unchanged by later appends") {
     SolveHistoryBuilder builder;
-    appendSteps(builder, 1, 1500);
+    appendHistorySteps(builder, 1, 1500);
     const SolveHistory early = builder.snapshot();
-    appendSteps(builder, 1501, 5000);
+    appendHistorySteps(builder, 1501, 5000);
     CHECK(builder.size() == 5000);
     CHECK(early.size() == 1500);
     CHECK(early.frozenChunks().size() == 1);
@@ -76,9 +76,9 @@ TEST_CASE("solve history: a snapshot is unchanged by later appends") {
 
 TEST_CASE("solve history: successive snapshots share their full chunks") {
     SolveHistoryBuilder builder;
-    appendSteps(builder, 1, 2100);
+    appendHistorySteps(builder, 1, 2100);
     const SolveHistory first = builder.snapshot();
-    appendSteps(builder, 2101, 3500);  // freezes a third chunk in between
+    appendHistorySteps(builder, 2101, 3500);  // freezes a third chunk in between
     const SolveHistory second = builder.snapshot();
     REQUIRE(first.frozenChunks().size() == 2);
     REQUIRE(second.frozenChunks().size() == 3);
@@ -94,7 +94,7 @@ TEST_CASE("solve history: clear starts empty, and a default history is empty") {
     CHECK(SolveHistory().size() == 0);
     CHECK(SolveHistory().frozenChunks().empty());
     SolveHistoryBuilder builder;
-    appendSteps(builder, 1, 1200);
+    appendHistorySteps(builder, 1, 1200);
     const SolveHistory before = builder.snapshot();
     builder.clear();
     CHECK(builder.size() == 0);
@@ -102,7 +102,7 @@ TEST_CASE("solve history: clear starts empty, and a default history is empty") {
     CHECK(after.empty());
     CHECK(after.frozenChunks().empty());
     CHECK(before.size() == 1200);  // what was published before the reset stays readable
-    appendSteps(builder, 1, 3);
+    appendHistorySteps(builder, 1, 3);
     const SolveHistory restarted = builder.snapshot();
     CHECK(restarted.size() == 3);
     CHECK(holdsStepsInOrder(restarted));

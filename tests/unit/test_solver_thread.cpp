@@ -62,7 +62,7 @@ private:
     IterationStats stats_;
 };
 
-std::shared_ptr<const Scene> unitPlate() {
+std::shared_ptr<const Scene> sharedUnitPlate() {
     auto scene = std::make_shared<Scene>();
     scene->name = "plate";
     scene->materials.push_back({"grey", Rgb(0.5), ExitanceRgb(Rgb(1.0))});
@@ -90,7 +90,7 @@ TEST_CASE("the worker yields to the display: a modest nice value by default, the
         std::atomic<int> nice{-100};
     };
     const auto observe = [](SolverThread& solver, Seen& seen) {
-        solver.send(command::LoadScene{unitPlate(), MeshingOptions{1.0}});
+        solver.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{1.0}});
         solver.waitUntilIdle();
         CHECK(seen.policy.load() >= 0);
     };
@@ -132,7 +132,7 @@ TEST_CASE("the worker yields to the display: a modest nice value by default, the
 
 TEST_CASE("steps advance exactly as many iterations as asked, and the snapshot follows") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::Step{3});
     thread.waitUntilIdle();
     const auto snapshot = thread.snapshot();
@@ -148,7 +148,7 @@ TEST_CASE("steps advance exactly as many iterations as asked, and the snapshot f
 
 TEST_CASE("run stops by itself once the residual is under the tolerance") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::SetTolerance{1e-3});
     thread.send(command::Run{});
     thread.waitUntilIdle();
@@ -161,7 +161,7 @@ TEST_CASE("run stops by itself once the residual is under the tolerance") {
 
 TEST_CASE("a material edit reaches the solver and the published scene, and reset starts over") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::SetMaterial{0, Rgb(0.25), ExitanceRgb(Rgb(2.0))});
     thread.send(command::Reset{});
     thread.send(command::Step{2});
@@ -177,7 +177,7 @@ TEST_CASE("a material edit reaches the solver and the published scene, and reset
 TEST_CASE("a material edit keeps a paused solve paused until the next step, and re-solves a converged one") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
     LiveSolve live(thread);
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::SetTolerance{1e-3});
     thread.send(command::Step{2});
     thread.waitUntilIdle();
@@ -209,7 +209,7 @@ TEST_CASE("a material edit keeps a paused solve paused until the next step, and 
 TEST_CASE("a new mesh or grouping from the Scene panel solves on when the solve ran or had converged, and waits when it was stepped") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
     LiveSolve live(thread);
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::SetTolerance{1e-3});
     thread.send(command::Run{});
     thread.waitUntilIdle();
@@ -407,7 +407,7 @@ TEST_CASE("materials edits keep the solver (no new form factors), while a new me
         return std::make_unique<FurnaceLikeSolver>(method, mesh.size(), 0.5, 1.0);
     };
     SolverThread thread({}, counting);
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.waitUntilIdle();
     CHECK(thread.snapshot()->solverBuilds == 1);
     CHECK(thread.snapshot()->meshing.maxPatchArea == 0.25);
@@ -448,7 +448,7 @@ TEST_CASE("a new method cancels a form-factor computation in progress") {
     };
     SolverThread thread({}, slow);
     thread.send(command::SetMethod{SolverMethod::Jacobi});
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     // Wait until the slow build is under way, then replace it.
     for (int i = 0; i < 5000 && thread.activity() != SolverActivity::FormFactors; ++i)
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
@@ -496,7 +496,7 @@ TEST_CASE("a new method stops a long step at once: the step's parallel loop is c
     };
     SolverThread thread({}, factory);
     thread.send(command::SetMethod{SolverMethod::Jacobi});
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::Run{});
     // Progress, not wall time: wait until the long step has begun its chunks.
     while (chunksRun.load() == 0) std::this_thread::yield();
@@ -513,7 +513,7 @@ TEST_CASE("a new method stops a long step at once: the step's parallel loop is c
 
 TEST_CASE("the history a snapshot carries is every step in order while the worker steps, and shares its full chunks") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     constexpr std::size_t kSteps = 2 * SolveHistory::kChunkSize + 500;
     thread.send(command::Step{kSteps});
     // Read every snapshot published during the steps on this thread, as the panels do.
@@ -553,7 +553,7 @@ TEST_CASE("the history a snapshot carries is every step in order while the worke
 
 TEST_CASE("generations only grow, and the reader never waits for a step") {
     SolverThread thread({}, furnaceFactory(0.9, 1.0));
-    thread.send(command::LoadScene{unitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
     thread.send(command::SetTolerance{1e-12});
     thread.send(command::Run{});
     std::uint64_t last = 0;
@@ -570,7 +570,7 @@ TEST_CASE("generations only grow, and the reader never waits for a step") {
 
 TEST_CASE("the convergence record overlays methods, cuts a segment at a material edit, and Reset materials restores the scene as loaded") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
-    const std::shared_ptr<const Scene> loaded = unitPlate();
+    const std::shared_ptr<const Scene> loaded = sharedUnitPlate();
     thread.send(command::LoadScene{loaded, MeshingOptions{0.25, 1000}});
     thread.send(command::SetMethod{SolverMethod::GaussSeidel});
     // Commands go before pending steps: each step request is waited for before the next command.

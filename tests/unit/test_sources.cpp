@@ -12,11 +12,12 @@
 #include "radiometry/sources/DistantSource.h"
 #include "radiometry/sources/PointSource.h"
 #include "radiometry/sources/SunExample.h"
+#include "tests/support/Common.h"
 
 using namespace radiant;
 
 namespace {
-constexpr double kPi = std::numbers::pi;
+using radiant::test::kPi;
 }
 
 TEST_SUITE("core") {

@@ -58,7 +58,7 @@ SolverOptions cheapOptions() {
     return options;
 }
 
-bool allFinite(const std::vector<Rgb>& values) {
+bool allBandsFinite(const std::vector<Rgb>& values) {
     return std::all_of(values.begin(), values.end(),
                        [](const Rgb& b) { return std::isfinite(b.x) && std::isfinite(b.y) && std::isfinite(b.z); });
 }
@@ -103,7 +103,7 @@ private:
             const std::size_t patches = s->mesh ? s->mesh->size() : 0;
             if (!s->radiosity.empty() && s->radiosity.size() != patches)
                 why << "radiosity has " << s->radiosity.size() << " values for " << patches << " patches";
-            if (!allFinite(s->radiosity)) why << "radiosity is not finite";
+            if (!allBandsFinite(s->radiosity)) why << "radiosity is not finite";
             if (s->mesh && (!s->scene || s->mesh->surfaceFirstPatch.size() != s->scene->surfaces.size() + 1))
                 why << "mesh and scene disagree on the surface count";
             // One mesh per mesh generation: the mesh pointer changes exactly when the generation does.

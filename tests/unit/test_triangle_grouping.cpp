@@ -33,7 +33,7 @@ using radiant::test::relativeTo;
 
 namespace {
 
-Scene loadGrouping(const std::string& file, bool group = true) {
+Scene loadTriangleGrouping(const std::string& file, bool group = true) {
     SceneLoadOptions options;
     options.groupCoplanarTriangles = group;
     return loadScene(std::string(RADIANT_TEST_DATA_DIR) + "/grouping/" + file, options).scene;
@@ -57,7 +57,7 @@ std::pair<std::size_t, double> upFacingAt(const PatchMesh& mesh, std::size_t sur
     return {count, area};
 }
 
-std::size_t patchesOf(const PatchMesh& mesh, std::size_t surface) {
+std::size_t patchCountOf(const PatchMesh& mesh, std::size_t surface) {
     return mesh.surfaceFirstPatch[surface + 1] - mesh.surfaceFirstPatch[surface];
 }
 
@@ -123,8 +123,8 @@ TEST_CASE("an L-shaped flat grid with a square hole keeps its outline: area, win
 }
 
 TEST_CASE("a subdivided, bevelled box: flat faces and bevel strips become one face each, the box stays closed") {
-    const Scene grouped = loadGrouping("bevelled_box_room.gltf");
-    const Scene ungrouped = loadGrouping("bevelled_box_room.gltf", false);
+    const Scene grouped = loadTriangleGrouping("bevelled_box_room.gltf");
+    const Scene ungrouped = loadTriangleGrouping("bevelled_box_room.gltf", false);
     const std::size_t box = surfaceOf(grouped, "bevelled box");
     const auto& faces = grouped.surfaces[box].faces;
     CHECK(ungrouped.surfaces[box].faces.size() == 1632);  // 3,072 triangles, paired where coplanar
@@ -145,12 +145,12 @@ TEST_CASE("a subdivided, bevelled box: flat faces and bevel strips become one fa
         CAPTURE(maxArea);
         const PatchMesh mesh = meshScene(grouped, {maxArea});
         const PatchMesh before = meshScene(ungrouped, {maxArea});
-        const std::size_t count = patchesOf(mesh, box);
-        MESSAGE(count << " patches at " << maxArea << " m^2 (" << patchesOf(before, box) << " ungrouped), area / max "
+        const std::size_t count = patchCountOf(mesh, box);
+        MESSAGE(count << " patches at " << maxArea << " m^2 (" << patchCountOf(before, box) << " ungrouped), area / max "
                       << area / maxArea);
         CHECK(mesh.size() == estimatePatchCount(grouped, {maxArea}));
         CHECK(static_cast<double>(count) < 3 * area / maxArea + 246);
-        if (maxArea >= 0.01) CHECK(count < patchesOf(before, box));
+        if (maxArea >= 0.01) CHECK(count < patchCountOf(before, box));
         double sum = 0;
         for (std::size_t p = mesh.surfaceFirstPatch[box]; p < mesh.surfaceFirstPatch[box + 1]; ++p) {
             CHECK(mesh.patches[p].area <= maxArea * (1 + 4e-6));
@@ -163,8 +163,8 @@ TEST_CASE("a subdivided, bevelled box: flat faces and bevel strips become one fa
 }
 
 TEST_CASE("a cylinder's cap of 336 triangles keeps its 48-gon outline and is cut to the requested area") {
-    const Scene grouped = loadGrouping("cylinder_room.gltf");
-    const Scene ungrouped = loadGrouping("cylinder_room.gltf", false);
+    const Scene grouped = loadTriangleGrouping("cylinder_room.gltf");
+    const Scene ungrouped = loadTriangleGrouping("cylinder_room.gltf", false);
     const std::size_t cylinder = surfaceOf(grouped, "cylinder");
     // The regular 48-gon of radius 0.4 m: (n / 2) r^2 sin(2 pi / n); float positions.
     const double capArea = 24 * 0.16 * std::sin(2 * std::numbers::pi / 48);
@@ -196,7 +196,7 @@ TEST_CASE("furnace inside the grouped bevelled box: B = E / (1 - rho) on every p
     // The flat faces and bevel strips are single faces of 0.81 and 0.054 m^2, cut to 0.01 m^2
     // patches by the mesher, next to the corners' small triangles: a crack or an overlap left by the
     // grouping would let light out or count it twice.
-    const Scene scene = loadGrouping("bevelled_box_furnace.gltf");
+    const Scene scene = loadTriangleGrouping("bevelled_box_furnace.gltf");
     REQUIRE(scene.surfaces[0].faces.size() == 246);
     const double maxArea = 0.01;
     const PatchMesh mesh = meshScene(scene, {maxArea});
@@ -235,8 +235,8 @@ TEST_CASE("the grouped cylinder room solves as the ungrouped one: the cap's irra
         mean["floor irradiance"] = floorPower / floorArea / 0.5;
         return mean;
     };
-    const auto grouped = solve(loadGrouping("cylinder_room.gltf"));
-    const auto ungrouped = solve(loadGrouping("cylinder_room.gltf", false));
+    const auto grouped = solve(loadTriangleGrouping("cylinder_room.gltf"));
+    const auto ungrouped = solve(loadTriangleGrouping("cylinder_room.gltf", false));
     for (const std::string what : {"cap irradiance", "floor irradiance"}) {
         CAPTURE(what);
         MESSAGE(what << ": " << grouped.at(what) << " W/m^2 grouped (" << grouped.at("patches") << " patches), "

@@ -32,7 +32,7 @@ Face faceOf(std::initializer_list<glm::dvec3> corners) {
     return face;
 }
 
-Scene sceneOf(std::vector<std::pair<std::string, std::vector<Face>>> surfaces) {
+Scene namedSurfacesScene(std::vector<std::pair<std::string, std::vector<Face>>> surfaces) {
     Scene scene;
     scene.name = "test scene";
     scene.materials.push_back({"grey", Rgb{0.5}, ExitanceRgb{}});
@@ -75,7 +75,7 @@ Scene cubeInterior(int n) {
             }
         surfaces.emplace_back("side " + std::to_string(s), std::move(faces));
     }
-    return sceneOf(std::move(surfaces));
+    return namedSurfacesScene(std::move(surfaces));
 }
 
 } // namespace
@@ -83,7 +83,7 @@ Scene cubeInterior(int n) {
 TEST_SUITE("formfactor") {
 
 TEST_CASE("ray caster: picks return the surface, face, point, normal and distance") {
-    const Scene scene = sceneOf({
+    const Scene scene = namedSurfacesScene({
         {"floor", {faceOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}), faceOf({{1, 0, 0}, {2, 0, 0}, {2, 1, 0}, {1, 1, 0}})}},
         {"wall", {faceOf({{3, 0, 0}, {3, 0, 1}, {3, 1, 1}, {3, 1, 0}})}},  // faces -x
         // A pentagon, so that some hits land in its second or third fan triangle.
@@ -200,7 +200,7 @@ TEST_CASE("visibility: a square blocker halfway between parallel plates hides th
     // fraction for a centred s x s blocker is (1 - (1 - s)^2)^2.
     for (const double s : {0.2, 0.5, 0.8}) {
         const double lo = 0.5 - s / 2, hi = 0.5 + s / 2;
-        const Scene scene = sceneOf({
+        const Scene scene = namedSurfacesScene({
             {"bottom", {faceOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}},
             {"top", {faceOf({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})}},
             {"blocker", {faceOf({{lo, lo, 0.5}, {hi, lo, 0.5}, {hi, hi, 0.5}, {lo, hi, 0.5}})}},
@@ -299,7 +299,7 @@ TEST_CASE("ray caster: packets leave out only the faces bounding the scene") {
     // (floor corners on both sides of its plane: it can block). Segments from the floor on one side
     // to the floor on the other pass over the wall's top edge or through the wall; a plane test on
     // the wall's rectangle says which. Segments on one side are never blocked.
-    const Scene scene = sceneOf({
+    const Scene scene = namedSurfacesScene({
         {"floor", {faceOf({{0, 0, 0}, {0, 0, 1}, {2, 0, 1}, {2, 0, 0}})}},
         {"wall", {faceOf({{1, 0, 0}, {1, 0.3, 0}, {1, 0.3, 1}, {1, 0, 1}})}},
     });
@@ -366,7 +366,7 @@ TEST_CASE("visibility: without a ray caster or rays, everything is visible") {
     const PatchPolygon a = polygonOf(faceOf({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}));
     const PatchPolygon b = polygonOf(faceOf({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}}));
     CHECK(visibilityFraction(a, b, nullptr) == 1.0);
-    const Scene empty = sceneOf({});
+    const Scene empty = namedSurfacesScene({});
     const RayCaster rays(empty);
     FormFactorOptions none;
     none.visibilityRays = 0;

@@ -32,7 +32,7 @@ void cell(const char* shortFormat, const char* fullFormat, double value) {
     if (ImGui::IsItemHovered()) ImGui::SetTooltip(fullFormat, value);
 }
 
-void row(const char* name, const SunPlanetNumbers& p) {
+void planetRow(const char* name, const SunPlanetNumbers& p) {
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextUnformatted(name);
@@ -146,9 +146,9 @@ void SunDemo::draw() {
         ImGui::PushTextWrapPos(-1.0f);  // cells stay whole: the sidebar wraps prose, and a column fitted to wrapped text shrinks to a letter
         for (const char* h : {"", "d\n(au)", "omega\n(sr)", "E\n(W/m^2)"}) ImGui::TableSetupColumn(h);
         ImGui::TableHeadersRow();
-        row("Earth", n.earth);
-        row("Mars", n.mars);
-        row("yours", yours);
+        planetRow("Earth", n.earth);
+        planetRow("Mars", n.mars);
+        planetRow("yours", yours);
         ImGui::PopTextWrapPos();
         ImGui::EndTable();
     }
