@@ -94,6 +94,30 @@ PatchErrors patchErrors(const HierarchicalSolver& solver, const PatchMesh& mesh,
     return errors;
 }
 
+
+/// The receiver's radiosity at x in platesWithBlocker's penumbra (a half-plane blocker, no quadrant,
+/// black lamp and blocker): B = rho F(dx -> the lamp's part [max(0, 1 - x), 1] x [0, 1] the point sees).
+double penumbraRadiosity(double rho, const glm::dvec3& x) {
+    return rho * radiant::test::overRectangle(radiant::test::pointToCornerRectangle, std::max(0.0, 1 - x.x) - x.x, 1 - x.x,
+                                              -x.y, 1 - x.y, 1);
+}
+
+/// platesWithBlocker's penumbra meshed at 0.01 m^2, solved by hierarchical radiosity at its defaults to
+/// a residual of 1e-6 at seeds 1-4: check(solver, mesh) for each.
+template <class Check>
+void forEachPenumbraSolve(const Scene& scene, Check&& check) {
+    const PatchMesh mesh = meshed(scene, 0.01);
+    for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
+        CAPTURE(seed);
+        SolverOptions options;  // the default link tolerance and element size
+        options.seed = seed;
+        HierarchicalSolver solver(scene, mesh, options, nullptr);
+        for (int k = 0; k < 100 && solver.step().residual > 1e-6; ++k) {
+        }
+        check(solver, mesh);
+    }
+}
+
 } // namespace
 
 TEST_SUITE("hierarchical") {
@@ -266,23 +290,13 @@ TEST_CASE("hierarchical penumbra: every patch across a penumbra near its closed-
     // for seeds 1-8 (4.4-8.3% and 1.1-1.3% now; nearer x = 0 the lamp is mostly hidden and a few
     // rays per term leave more noise).
     const double rho = 0.5;
-    const Scene scene = platesWithBlocker(true, false, 1, rho);
-    const PatchMesh mesh = meshed(scene, 0.01);
-    for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
-        CAPTURE(seed);
-        SolverOptions options;  // the default link tolerance and element size
-        options.seed = seed;
-        HierarchicalSolver solver(scene, mesh, options, nullptr);
-        for (int k = 0; k < 100 && solver.step().residual > 1e-6; ++k) {
-        }
+    forEachPenumbraSolve(platesWithBlocker(true, false, 1, rho), [&](const HierarchicalSolver& solver, const PatchMesh& mesh) {
         const auto seesLamp = [](const Patch& patch) { return patch.centroid.x >= 0.2; };
-        const PatchErrors off = patchErrors(solver, mesh, 1, seesLamp, [&](const glm::dvec3& x) {
-            return rho * radiant::test::overRectangle(radiant::test::pointToCornerRectangle, std::max(0.0, 1 - x.x) - x.x,
-                                                      1 - x.x, -x.y, 1 - x.y, 1);
-        });
+        const PatchErrors off =
+            patchErrors(solver, mesh, 1, seesLamp, [&](const glm::dvec3& x) { return penumbraRadiosity(rho, x); });
         CHECK(off.mean < 0.02);
         CHECK(off.worst < 0.12);
-    }
+    });
 }
 
 TEST_CASE("hierarchical penumbra: every leaf across a penumbra near its closed-form irradiance") {
@@ -293,15 +307,7 @@ TEST_CASE("hierarchical penumbra: every leaf across a penumbra near its closed-f
     // 1-4: area-weighted mean 2.3-2.7%, worst 8.9-14% (with every leaf's own row, as before session
     // 14: 2.1-2.9%, 11-15%); nearer x = 0 the lamp is mostly hidden and the rays' noise dominates.
     const double rho = 0.5;
-    const Scene scene = platesWithBlocker(true, false, 1, rho);
-    const PatchMesh mesh = meshed(scene, 0.01);
-    for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
-        CAPTURE(seed);
-        SolverOptions options;
-        options.seed = seed;
-        HierarchicalSolver solver(scene, mesh, options, nullptr);
-        for (int k = 0; k < 100 && solver.step().residual > 1e-6; ++k) {
-        }
+    forEachPenumbraSolve(platesWithBlocker(true, false, 1, rho), [&](const HierarchicalSolver& solver, const PatchMesh&) {
         const ElementTree& tree = solver.elements();
         double mean = 0, worst = 0, area = 0;
         for (const ElementIndex e : tree.leaves()) {
@@ -310,11 +316,8 @@ TEST_CASE("hierarchical penumbra: every leaf across a penumbra near its closed-f
             double exact = 0;
             constexpr int kSide = 12;
             for (int a = 0; a < kSide; ++a)
-                for (int b = 0; b < kSide; ++b) {
-                    const glm::dvec3 x = hierarchical::pointOn(polygon, (a + 0.5) / kSide, (b + 0.5) / kSide);
-                    exact += rho * radiant::test::overRectangle(radiant::test::pointToCornerRectangle, std::max(0.0, 1 - x.x) - x.x,
-                                                                1 - x.x, -x.y, 1 - x.y, 1);
-                }
+                for (int b = 0; b < kSide; ++b)
+                    exact += penumbraRadiosity(rho, hierarchical::pointOn(polygon, (a + 0.5) / kSide, (b + 0.5) / kSide));
             exact /= kSide * kSide;
             const double off = std::abs(tree.radiosity()[e].x / exact - 1);
             mean += polygon.area * off;
@@ -325,7 +328,7 @@ TEST_CASE("hierarchical penumbra: every leaf across a penumbra near its closed-f
         MESSAGE("leaves with x >= 0.2: area-weighted mean " << mean << ", worst " << worst);
         CHECK(mean < 0.035);
         CHECK(worst < 0.2);
-    }
+    });
 }
 
 TEST_CASE("hierarchical patch rows: terms scaled from one point keep every patch's closed-form irradiance") {
