@@ -17,6 +17,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/JsonRgb.h"
 #include "app/cli/ProbeCommandLine.h"
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
@@ -66,8 +67,6 @@ std::optional<std::size_t> chooseTarget(const Scene& scene, const std::string& n
     if (!scene.lights.empty()) return std::nullopt;
     throw RadiantError({scene.name, "--target"}, "the scene has no emitting surface; name a target");
 }
-
-nlohmann::json rgbJson(const Rgb& v) { return nlohmann::json::array({v.x, v.y, v.z}); }
 
 int runProbe(const ProbeCommandOptions& options) {
     const glm::dvec3 point = parseVector(options.point, "--point");
@@ -138,15 +137,15 @@ int runProbe(const ProbeCommandOptions& options) {
     if (solution == "solved") out["residual"] = residual;
     out["patches"] = mesh.size();
     out["unknowns"] = system.groups ? system.groups->size() : mesh.size();
-    out["point"] = rgbJson(reading.at.point);
-    out["normal"] = rgbJson(reading.normal);
+    out["point"] = rgbArray<nlohmann::json>(reading.at.point);
+    out["normal"] = rgbArray<nlohmann::json>(reading.normal);
     out["surface"] = scene.surfaces[reading.at.surface].name;
-    out["radiosity_W_m2"] = rgbJson(reading.radiosity.value());
-    out["interpolated_radiosity_W_m2"] = rgbJson(reading.interpolatedRadiosity.value());
-    out["patch_radiosity_W_m2"] = rgbJson(reading.patchRadiosity.value());
-    out["radiance_W_m2_sr"] = rgbJson(reading.radiance.value());
-    out["irradiance_W_m2"] = rgbJson(reading.irradiance.value());
-    out["direct_irradiance_W_m2"] = rgbJson(reading.directIrradiance.value());
+    out["radiosity_W_m2"] = rgbArray<nlohmann::json>(reading.radiosity.value());
+    out["interpolated_radiosity_W_m2"] = rgbArray<nlohmann::json>(reading.interpolatedRadiosity.value());
+    out["patch_radiosity_W_m2"] = rgbArray<nlohmann::json>(reading.patchRadiosity.value());
+    out["radiance_W_m2_sr"] = rgbArray<nlohmann::json>(reading.radiance.value());
+    out["irradiance_W_m2"] = rgbArray<nlohmann::json>(reading.irradiance.value());
+    out["direct_irradiance_W_m2"] = rgbArray<nlohmann::json>(reading.directIrradiance.value());
     if (options.photometric) {
         out["illuminance_lx"] = illuminanceLux(reading.irradiance);
         out["direct_illuminance_lx"] = illuminanceLux(reading.directIrradiance);

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/JsonRgb.h"
 #include "app/cli/ViewArguments.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
@@ -42,8 +43,6 @@ std::string formatValue(double value) {
     out << value;
     return out.str();
 }
-
-nlohmann::ordered_json rgbArray(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 int runReference(const ReferenceCommandOptions& options) {
     const bool timed = options.timed;

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "app/cli/CommandLine.h"
+#include "app/cli/JsonRgb.h"
 #include "app/cli/ViewArguments.h"
 #include "app/solver/ConvergenceCsv.h"
 #include "radiometry/common/Error.h"
@@ -67,8 +68,6 @@ public:
 private:
     std::jthread printer_;
 };
-
-nlohmann::ordered_json rgbOrderedJson(const Rgb& v) { return nlohmann::ordered_json::array({v.x, v.y, v.z}); }
 
 void checkPositive(double value, const char* option) {
     if (!(value > 0)) throw RadiantError({"", option}, "must be > 0, got " + std::to_string(value));
@@ -126,10 +125,10 @@ int runSolve(const SolveOptions& options) {
                                           {"area_m2", area},
                                           {"patches", patches},
                                           {"unknowns", groups ? groups->surfaceFirstGroup[s + 1] - groups->surfaceFirstGroup[s] : patches},
-                                          {"reflectance", rgbOrderedJson(material.reflectance)},
-                                          {"exitance_W_m2", rgbOrderedJson(material.exitance.value())},
-                                          {"radiosity_W_m2", rgbOrderedJson(radiosity)},
-                                          {"power_W", rgbOrderedJson(power)}};
+                                          {"reflectance", rgbArray(material.reflectance)},
+                                          {"exitance_W_m2", rgbArray(material.exitance.value())},
+                                          {"radiosity_W_m2", rgbArray(radiosity)},
+                                          {"power_W", rgbArray(power)}};
         if (options.photometric) {
             surface["luminous_exitance_lm_m2"] = illuminanceLux(RadiosityRgb(radiosity));
             surface["luminance_cd_m2"] = luminanceCdPerM2(radianceFromRadiosity(RadiosityRgb(radiosity)));

@@ -29,10 +29,6 @@ std::string progressLine(const Snapshot& s, std::optional<double> longWorkDone) 
     return text;
 }
 
-} // namespace radiant::app
-
-namespace radiant::app {
-
 std::optional<double> longWorkDone(const SolverThread& thread) {
     const SolverActivity activity = thread.activity();
     if (activity != SolverActivity::Meshing && activity != SolverActivity::FormFactors) return std::nullopt;
