@@ -172,8 +172,8 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
         // Where B is below the dark floor on both sides the ratio is taken to the floor: say so, and
         // how many patches that is, or a reader takes 100% at a patch nobody lights for a wrong solver.
         std::snprintf(line, sizeof line,
-                      "mean %.3g%%, largest %.3g%% (%s)\non %s's mesh (%zu patches); B below 1%% of the mean\n"
-                      "(%.2g W/m\xC2\xB2 R+G+B) counts as that: %zu patches are darker in both",
+                      "mean %.3g%%, largest %.3g%% (%s)\non %s's mesh (%zu patches)\n"
+                      "B under 1%% of the mean, %.2g W/m\xC2\xB2 R+G+B,\ncounts as that: %zu patches dark in both",
                       100 * d.meanRelative, 100 * d.maxRelative, d.scene->surfaces.at(surface).name.c_str(),
                       d.onFirst ? "A" : "B", d.mesh->size(), d.darkFloor, d.darkPatches);
     } else
