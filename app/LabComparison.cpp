@@ -166,6 +166,7 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
         return false;
     }
     const SolutionDifference& d = differencer_.current();
+    static_assert(kDarkShare == 0.01, "the legend, this label and the Difference and probe tooltips say 1%");
     char line[480];
     if (d.mesh) {
         const std::size_t surface = d.mesh->patches.at(d.largestPatch).surface;
