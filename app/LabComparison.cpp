@@ -166,17 +166,24 @@ bool LabComparison::drawOverlays(const render::Viewport& viewInUiUnits) const {
         return false;
     }
     const SolutionDifference& d = differencer_.current();
-    char line[320];
-    if (d.mesh)
-        std::snprintf(line, sizeof line, "mean %.3g%%, largest %.3g%%\non %s's mesh (%zu patches)", 100 * d.meanRelative,
-                      100 * d.maxRelative, d.onFirst ? "A" : "B", d.mesh->size());
-    else
+    static_assert(kDarkShare == 0.01, "the legend, this label and the Difference and probe tooltips say 1%");
+    char line[480];
+    if (d.mesh) {
+        const std::size_t surface = d.mesh->patches.at(d.largestPatch).surface;
+        // Where B is below the dark floor on both sides the ratio is taken to the floor: say so, and
+        // how many patches that is, or a reader takes 100% at a patch nobody lights for a wrong solver.
+        std::snprintf(line, sizeof line,
+                      "mean %.3g%%, largest %.3g%% (%s)\non %s's mesh (%zu patches)\n"
+                      "B under 1%% of the mean, %.2g W/m\xC2\xB2 R+G+B,\ncounts as that: %zu patches dark in both",
+                      100 * d.meanRelative, 100 * d.maxRelative, d.scene->surfaces.at(surface).name.c_str(),
+                      d.onFirst ? "A" : "B", d.mesh->size(), d.darkFloor, d.darkPatches);
+    } else
         std::snprintf(line, sizeof line, "waiting for both to step (A: %s; B: %s)",
                       progressLine(a, longWorkDone(live_.thread)).c_str(), progressLine(b, longWorkDone(*live_.second)).c_str());
     drawLabel(viewInUiUnits, IM_COL32(235, 235, 235, 255), "Difference |B_A - B_B| / B",
               labelA + "  vs  " + labelB + "\n" + line, 0.6f);
     render::ColourLegend difference = render::makeLegend(kDifferenceTop, true, render::DisplaySettings::kLogDecades);
-    difference.quantity = "|B_A - B_B| / B";
+    difference.quantity = "|B_A - B_B| / max(B, 1% mean)";
     difference.unit = "ratio (0.01 = 1%)";
     drawLegendOverlay(difference, viewInUiUnits);
     return true;

@@ -303,7 +303,8 @@ void ProbePanel::drawComparison(const ProbeReading& a, const Snapshot& secondSna
     scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.patchRadiosity.value(), b.patchRadiosity.value()));
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Relative difference of the two solvers' own values for the patch under the point (R+G+B\n"
-                          "totals; the difference view shows this for every patch of the finer mesh)");
+                          "totals, relative to the larger; the difference view shows this for every patch of the finer\n"
+                          "mesh, relative to 1%% of the scene's mean radiosity where both are darker than that)");
     rgbRow("A: M+rho E", "W/m\xC2\xB2", a.radiosity.value());
     rgbRow("B: M+rho E", "W/m\xC2\xB2", b.radiosity.value());
     scalarRow("|A - B| / B", "%.3g%%", 100 * relativeDifference(a.radiosity.value(), b.radiosity.value()));

@@ -132,7 +132,10 @@ void SolverPanel::drawComparison() {
     ImGui::RadioButton("Difference", &view, 1);
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Per patch of the finer mesh: |B_A - B_B| / B, the relative difference of the two\n"
-                          "solutions' radiosity, in false colour on a log scale");
+                          "solutions' radiosity (R+G+B), in false colour on a log scale. B is the larger of the\n"
+                          "two, or 1%% of the scene's mean radiosity where both are darker than that: a patch\n"
+                          "no method should light (floor under a block) reads its stray light against the\n"
+                          "scene's scale, not 100%%");
     settings.view = view == 0 ? ComparisonView::SideBySide : ComparisonView::Difference;
     if (!(settings == live_.comparison())) live_.setComparison(settings);
     ImGui::Separator();

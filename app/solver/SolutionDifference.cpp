@@ -20,9 +20,9 @@ bool samePatches(const PatchMesh& a, const PatchMesh& b) {
 
 } // namespace
 
-double relativeDifference(const Rgb& a, const Rgb& b) {
+double relativeDifference(const Rgb& a, const Rgb& b, double floor) {
     const double ta = sumOfBands(a), tb = sumOfBands(b);
-    const double larger = std::max(std::abs(ta), std::abs(tb));
+    const double larger = std::max({std::abs(ta), std::abs(tb), floor});
     return larger > 0 ? std::abs(ta - tb) / larger : 0.0;
 }
 
@@ -67,14 +67,29 @@ const SolutionDifference& SolutionDifferencer::update(const Snapshot& a, const S
     d.scene = fine.scene;
     d.onFirst = firstIsFiner;
     d.relative.resize(fine.mesh->size());
-    d.maxRelative = 0;
-    double weighted = 0, area = 0;
+    const std::vector<Patch>& patches = fine.mesh->patches;
+    // The scale: both solutions' area-mean radiosity over the finer mesh (emitters included).
+    double power = 0, area = 0;
     for (std::size_t p = 0; p < d.relative.size(); ++p) {
-        const double r = relativeDifference(fine.radiosity[p], coarse.radiosity[coarseOf_[p]]);
+        power += 0.5 * (sumOfBands(fine.radiosity[p]) + sumOfBands(coarse.radiosity[coarseOf_[p]])) * patches[p].area;
+        area += patches[p].area;
+    }
+    d.darkFloor = area > 0 ? kDarkShare * std::abs(power) / area : 0;
+    d.maxRelative = 0;
+    d.largestPatch = 0;
+    d.darkPatches = 0;
+    double weighted = 0;
+    for (std::size_t p = 0; p < d.relative.size(); ++p) {
+        const Rgb& bFine = fine.radiosity[p];
+        const Rgb& bCoarse = coarse.radiosity[coarseOf_[p]];
+        const double r = relativeDifference(bFine, bCoarse, d.darkFloor);
         d.relative[p] = r;
-        d.maxRelative = std::max(d.maxRelative, r);
-        weighted += r * fine.mesh->patches[p].area;
-        area += fine.mesh->patches[p].area;
+        if (r > d.maxRelative) {
+            d.maxRelative = r;
+            d.largestPatch = p;
+        }
+        if (std::abs(sumOfBands(bFine)) < d.darkFloor && std::abs(sumOfBands(bCoarse)) < d.darkFloor) ++d.darkPatches;
+        weighted += r * patches[p].area;
     }
     d.meanRelative = area > 0 ? weighted / area : 0;
     ++d.generation;

@@ -10,6 +10,7 @@
 
 #include "app/solver/Comparison.h"
 #include "app/solver/LiveSolve.h"
+#include "app/solver/SolveHistory.h"
 #include "app/solver/SolutionDifference.h"
 #include "app/solver/SolverThread.h"
 #include "radiometry/mesh/PatchLocator.h"
@@ -22,6 +23,22 @@ namespace {
 
 /// |a - b| / |b|: doctest's epsilon is absolute below 1.
 double relativeError(double a, double b) { return std::abs(a - b) / std::abs(b); }
+
+/// A snapshot that has stepped once, with the given per-patch radiosity on `mesh`.
+Snapshot steppedSnapshot(std::shared_ptr<const Scene> scene, std::shared_ptr<const PatchMesh> mesh,
+                         std::vector<Rgb> radiosity, std::uint64_t generation) {
+    Snapshot s;
+    s.scene = std::move(scene);
+    s.mesh = std::move(mesh);
+    s.radiosity = std::move(radiosity);
+    s.generation = generation;
+    SolveHistoryBuilder history;
+    IterationStats step;
+    step.iteration = 1;
+    history.append(step);
+    s.history = history.snapshot();
+    return s;
+}
 
 } // namespace
 
@@ -151,6 +168,46 @@ TEST_CASE("the relative difference of two radiosities is of their band totals, 0
     CHECK(relativeDifference(Rgb(0.0), Rgb(0.0)) == 0.0);
     CHECK(relativeDifference(Rgb(2.0, 0.0, 0.0), Rgb(1.0, 0.0, 0.0)) == doctest::Approx(0.5).scale(0));
     CHECK(relativeDifference(Rgb(0.0), Rgb(3.0)) == doctest::Approx(1.0).scale(0));
+    // A floor above both: the difference relative to it.
+    CHECK(relativeDifference(Rgb(0.0), Rgb(1e-6), 1e-2) == doctest::Approx(3e-4).scale(0));
+    CHECK(relativeDifference(Rgb(1.0), Rgb(0.5), 1e-2) == doctest::Approx(0.5).scale(0));
+}
+
+TEST_CASE("a patch neither solution lights counts its stray light against 1% of the mean radiosity, not as 100%") {
+    // The Cornell box at 0.001 m^2, progressive against Gauss-Seidel, showed "largest 100%": floor
+    // patches under a block, 0 in one solution and 1.7e-6 to 9.7e-5 W/m^2 (R+G+B) in the other. Here the
+    // same on a hand-made pair of solutions whose measure has a closed form: every patch B = 1 W/m^2
+    // per band (3 in total) on both sides but for patch `dark`, 0 in A and 1e-5 per band in B, and
+    // patch `lit`, 10% brighter in B.
+    auto scene = std::make_shared<const Scene>(loadScene("cornell-box").scene);
+    auto mesh = std::make_shared<const PatchMesh>(meshScene(*scene, {0.04}));
+    const std::size_t n = mesh->size();
+    REQUIRE(n > 10);
+    const std::size_t dark = 3, lit = 7;
+    std::vector<Rgb> a(n, Rgb(1.0)), b(n, Rgb(1.0));
+    a[dark] = Rgb(0.0);
+    b[dark] = Rgb(1e-5);
+    b[lit] = Rgb(1.1);
+    double area = 0, power = 0;  // both sides' mean of the R+G+B totals, area-weighted
+    for (std::size_t p = 0; p < n; ++p) {
+        area += mesh->patches[p].area;
+        power += 0.5 * ((a[p].x + a[p].y + a[p].z) + (b[p].x + b[p].y + b[p].z)) * mesh->patches[p].area;
+    }
+    const double floor = 0.01 * power / area;  // about 0.03 W/m^2
+    SolutionDifferencer differencer;
+    const SolutionDifference& d = differencer.update(steppedSnapshot(scene, mesh, a, 1), steppedSnapshot(scene, mesh, b, 1));
+    REQUIRE(d.mesh);
+    CHECK(d.darkFloor == doctest::Approx(floor).epsilon(1e-12));
+    CHECK(d.darkPatches == 1);
+    // Before the floor, patch `dark` read |0 - 3e-5| / 3e-5 = 1, and so did the largest.
+    CHECK(d.relative[dark] == doctest::Approx(3e-5 / floor).epsilon(1e-12));
+    CHECK(d.relative[dark] < 1e-2);
+    // A lit patch's difference is its own: 0.3 / 3.3.
+    CHECK(d.relative[lit] == doctest::Approx(0.3 / 3.3).epsilon(1e-12));
+    CHECK(d.maxRelative == d.relative[lit]);
+    CHECK(d.largestPatch == lit);
+    for (std::size_t p = 0; p < n; ++p)
+        if (p != dark && p != lit) CHECK(d.relative[p] == 0.0);
 }
 
 } // TEST_SUITE
