@@ -8,10 +8,10 @@
 //    averaged over 2 x 2 or 4 x 4 Gauss points of the receiver when it is close;
 //  - visibility from rays between stratified points of the receiver and stratified sample points
 //    of the shooter, drawn afresh for each shot where the group's unshot power is (a block of
-//    floor half under a box shoots from its lit half only), adaptively: 4 rays settle a receiver
-//    they agree on, and a receiver in a penumbra casts 64, so a shadow's edge comes out as the
-//    same area-to-area fraction Gauss-Seidel's matrix holds, not as {0, 1/2, 1} from 2-4 rays
-//    (the light source shoots once, so its few-ray noise never averages out).
+//    floor half under a box shoots from its lit half only): a strong shot casts 16 + 64 rays a
+//    receiver, so a shadow's edge comes out as the same area-to-area fraction Gauss-Seidel's
+//    matrix holds, not as {0, 1/2, 1} from 2-4 rays (the light source shoots once, so its few-ray
+//    noise never averages out); weak shots cast 2-16, and the many of them average.
 //  - for a group, the kernel weighs each member by its share of the shot's power, and each visibility
 //    ray by what its member sends to the receiver: the light leaves from where it is, and a receiver
 //    beside the group does not count rays to members beyond its horizon as shadowed.
@@ -59,10 +59,10 @@ constexpr double kFarInDiameters = 4.0;
 constexpr double kNearInDiameters = 1.5;
 
 /// Visibility rays per receiver, in FormFactorOptions::visibilityRays (16 by default): every
-/// receiver first casts a few (2 to 16), and one in a penumbra (they disagree) then casts up to
-/// kPenumbraRayFactor times visibilityRays (64), against as many stratified target points per shot. The
-/// full count goes to shots carrying at least kFullPenumbraShare of the emitted power (the light
-/// source's); a shot carrying less gets proportionally fewer (at least the first 4): the error a
+/// receiver first casts a few (2 to 16), and in a shot carrying at least kFullPenumbraShare of the
+/// emitted power (the light source's) then kPenumbraRayFactor times visibilityRays (64) more,
+/// against as many stratified target points per shot (until 2026-12-03 only where its first 16
+/// disagreed, which was biased: shotVisibility); a shot carrying less casts fewer: the error a
 /// shot leaves grows with its power, and the many weak shots' noise averages out over receivers
 /// lit by all of them. Without that, 64 rays at every penumbra of every block shot made the Cornell
 /// box at 10k patches 5.6x slower to residual 1e-2 (1.6 -> 9.0 s). At 0.25 the default 7 x 7 blocks
@@ -259,15 +259,14 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
     return -1;
 }
 
-/// Area-to-area visibility between the receiver and the shot's targets, adaptively: a few
-/// stratified rays settle a receiver they all agree on (wholly lit or wholly shadowed, most of the
-/// scene); where they disagree the receiver is in a penumbra, and all targets.size() rays measure
-/// its fraction. Few rays alone would quantise a penumbra to {0, 1/2, 1} for the whole solve: the
-/// light source shoots once.
-/// Stopping early where the first rays agree biases the estimate towards 0 and 1 (with n
-/// independent first rays and a true fraction v it is v^n + (1 - v^n - (1-v)^n) v' for the second
-/// pass's v': 3v^2 - 2v^3 for n = 2), so only a pass of the full visibilityRays decides; weaker
-/// shots cast their fixed few rays, unbiased, and are averaged by the many shots after them.
+/// Area-to-area visibility between the receiver and the shot's targets. A strong shot (the full
+/// visibilityRays first) casts all targets.size() rays more at every receiver, and the two passes
+/// are averaged with fixed weights: few rays alone would quantise a penumbra to {0, 1/2, 1} for the
+/// whole solve (the light source shoots once). Stopping where the first rays agree would bias the
+/// estimate towards 0 and 1 (with n independent first rays and a true fraction v it is
+/// v^n + (1 - v^n - (1-v)^n) v' for the second pass's v': 3v^2 - 2v^3 for n = 2; with 16
+/// stratified rays a receiver that sees a sliver of the light stays dark). Weaker shots cast their
+/// fixed few rays, unbiased, and are averaged by the many shots after them.
 double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, const glm::dvec3& shooterNormal,
                       std::size_t receiver, int fewRays, int penumbraRays, std::span<const double> memberWeight) {
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
@@ -280,7 +279,11 @@ double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::si
             stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, plain);
         return again >= 0 ? again : plain;
     }
-    if (first == 0.0 || first == 1.0 || fewRays < g.options.visibilityRays || !more) return first;
+    // A strong shot casts its penumbra pass whatever the first pass saw: stopping where the first
+    // rays agree biased its penumbrae towards 0 and 1, and the light source shoots once, so that
+    // bias stayed (on the Cornell box at the default mesh, floor patches in the short block's
+    // penumbra came out 25-30% darker than Gauss-Seidel with 64 rays, at every seed).
+    if (fewRays < g.options.visibilityRays || !more) return first;
     double unused = 0;
     double second =
         stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, unused);

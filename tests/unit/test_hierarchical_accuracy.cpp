@@ -5,6 +5,7 @@
 #include <doctest/doctest.h>
 
 #include "tests/support/CatalogViewFactors.h"
+#include "tests/support/PenumbraPlates.h"
 
 #include <algorithm>
 #include <cmath>
@@ -21,36 +22,11 @@
 #include "radiometry/solver/HierarchicalSolver.h"
 
 using namespace radiant;
+using radiant::test::penumbraRadiosity;
+using radiant::test::platesWithBlocker;
+using radiant::test::quadFace;
 
 namespace {
-
-Face quadFace(std::initializer_list<glm::dvec3> corners) {
-    Face face;
-    face.vertices = corners;
-    face.updateGeometry();
-    return face;
-}
-
-/// Unit squares: "lower" at z = 0 facing +z, "upper" at z = 1 facing -z. With `blocker`, a black
-/// plate in the plane z = 1/2 covers x < 1/2 (and y < 1/2 too when `quadrant`): a segment between
-/// the squares crosses that plane at the mean of its ends, so it is blocked with probability 1/2
-/// (resp. 1/4) for ends uniform on the squares, and by the mirror symmetry x -> 1 - x the blocked
-/// share of the form factor is 1/2 as well (half-plane blocker).
-Scene platesWithBlocker(bool blocker, bool quadrant, double lowerExitance, double upperReflectance) {
-    Scene scene;
-    scene.name = "half-blocked plates";
-    scene.materials = {{"lamp", Rgb(0.0), ExitanceRgb(Rgb(lowerExitance))},
-                       {"receiver", Rgb(upperReflectance), ExitanceRgb{}},
-                       {"black", Rgb(0.0), ExitanceRgb{}}};
-    scene.surfaces.push_back({"lower", 0, {quadFace({{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}})}, "test"});
-    scene.surfaces.push_back({"upper", 1, {quadFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})}, "test"});
-    if (blocker) {
-        const double yEnd = quadrant ? 0.5 : 2.0;
-        scene.surfaces.push_back(
-            {"blocker", 2, {quadFace({{-1, -1, 0.5}, {0.5, -1, 0.5}, {0.5, yEnd, 0.5}, {-1, yEnd, 0.5}})}, "test"});
-    }
-    return scene;
-}
 
 PatchMesh meshed(const Scene& scene, double maxPatchArea) {
     MeshingOptions meshing;
@@ -94,13 +70,6 @@ PatchErrors patchErrors(const HierarchicalSolver& solver, const PatchMesh& mesh,
     return errors;
 }
 
-
-/// The receiver's radiosity at x in platesWithBlocker's penumbra (a half-plane blocker, no quadrant,
-/// black lamp and blocker): B = rho F(dx -> the lamp's part [max(0, 1 - x), 1] x [0, 1] the point sees).
-double penumbraRadiosity(double rho, const glm::dvec3& x) {
-    return rho * radiant::test::overRectangle(radiant::test::pointToCornerRectangle, std::max(0.0, 1 - x.x) - x.x, 1 - x.x,
-                                              -x.y, 1 - x.y, 1);
-}
 
 /// platesWithBlocker's penumbra meshed at 0.01 m^2, solved by hierarchical radiosity at its defaults to
 /// a residual of 1e-6 at seeds 1-4: check(solver, mesh) for each.
