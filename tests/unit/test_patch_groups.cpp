@@ -257,7 +257,7 @@ TEST_CASE("a lit grouped sphere gathers what the ungrouped sphere gathers over t
     const PatchMesh mesh = meshPatchGroups(scene, area);
     auto groups = std::make_shared<const PatchGroups>(groupAt(mesh, area));
     SolverOptions options;
-    options.formFactors.visibilityRays = 4;  // the sphere shadows the floor
+    options.formFactors.visibilityRays = 16;  // the sphere shadows the floor
     auto grouped = makeGroupedSolver(SolverMethod::GaussSeidel, scene, mesh, groups, options);
     auto ungrouped = makeGaussSeidelSolver(scene, mesh, options, nullptr);
     auto shooting = makeGroupedSolver(SolverMethod::Progressive, scene, mesh, groups, options);
