@@ -170,36 +170,49 @@ BenchTable benchAccuracy(const BenchOptions& options) {
     const double budget = options.quick ? 30.0 : 120.0;
     std::vector<ProbeReading> converged;
     std::vector<std::vector<ProbeReading>> readings;
-    const auto readAll = [&](const std::vector<Rgb>& solution) {
+    const auto readAll = [&](const Probe& on, const std::vector<Rgb>& solution) {
         std::vector<ProbeReading> out;
-        for (const AccuracyPoint& point : points) out.push_back(probe.measure(point.at.point, point.at.normal, solution));
+        for (const AccuracyPoint& point : points) out.push_back(on.measure(point.at.point, point.at.normal, solution));
         return out;
+    };
+    // Set-up (form factors, links) and steps to the lab's tolerance, within the budget.
+    struct TimedSolve {
+        std::unique_ptr<Solver> solver;
+        double seconds = 0, residual = 0;
+        std::chrono::steady_clock::time_point start;
+    };
+    const auto solveToTolerance = [&](SolverMethod method, const PatchMesh& on) {
+        TimedSolve run;
+        run.start = std::chrono::steady_clock::now();
+        run.solver = makeSolver(method, scene, on);
+        run.residual = run.solver->lastStats().residual;
+        while (run.residual > tolerance && secondsSince(run.start) < budget) run.residual = run.solver->step().residual;
+        run.seconds = secondsSince(run.start);
+        return run;
+    };
+    const auto addRow = [&](const std::string& name, std::size_t patches, const TimedSolve& run, const MethodErrors& errors,
+                            const std::string& target, std::string verdict) {
+        if (run.residual > tolerance) verdict += " (residual " + formatNumber(run.residual, 2) + " after the budget)";
+        table.rows.push_back({name, std::to_string(patches), formatNumber(run.seconds), percent(errors.meanB),
+                              percent(errors.worstB) + " (" + errors.worstBAt + ")", percent(errors.meanE),
+                              percent(errors.worstE), "-", target, verdict});
     };
     for (const SolverMethodInfo& info : solverMethods()) {
         const SolverMethod method = info.method;
-        const std::string name(info.name);
         const bool hierarchical = method == SolverMethod::Hierarchical;
-        const std::string target = hierarchical ? "0.5% / 1.5%, < 0.12 s" : "1% / 3%";
-        const auto start = std::chrono::steady_clock::now();
-        const std::unique_ptr<Solver> solver = makeSolver(method, scene, mesh);
-        double residual = solver->lastStats().residual;
-        while (residual > tolerance && secondsSince(start) < budget) residual = solver->step().residual;
-        const double seconds = secondsSince(start);
-        readings.push_back(readAll(solver->solution()));
-
+        TimedSolve run = solveToTolerance(method, mesh);
+        readings.push_back(readAll(probe, run.solver->solution()));
         const MethodErrors errors = errorsAgainstReference(points, readings.back());
         const double meanTarget = hierarchical ? 0.005 : 0.01, worstTarget = hierarchical ? 0.015 : 0.03;
         const bool accurate = errors.meanB <= meanTarget && errors.worstB <= worstTarget &&
                               errors.meanE <= meanTarget && errors.worstE <= worstTarget;
         std::string verdict = accurate ? "met" : "missed";
-        if (hierarchical) verdict += "; time " + timeVerdict(seconds, 0.12);
-        if (residual > tolerance) verdict += " (residual " + formatNumber(residual, 2) + " after the budget)";
-        table.rows.push_back({name, std::to_string(mesh.size()), formatNumber(seconds), percent(errors.meanB),
-                              percent(errors.worstB) + " (" + errors.worstBAt + ")", percent(errors.meanE),
-                              percent(errors.worstE), "", target, verdict});
+        if (hierarchical) verdict += "; time " + timeVerdict(run.seconds, 0.12);
+        addRow(std::string(info.name), mesh.size(), run, errors, hierarchical ? "0.5% / 1.5%, < 0.12 s" : "1% / 3%", verdict);
         if (method == SolverMethod::GaussSeidel) {
-            while (residual > kConverged && secondsSince(start) < 2 * budget) residual = solver->step().residual;
-            converged = readAll(solver->solution());
+            while (run.residual > kConverged && secondsSince(run.start) < 2 * budget)
+                run.residual = run.solver->step().residual;
+            converged = readAll(probe, run.solver->solution());
         }
     }
     // The solver's share: each method's point value against converged Gauss-Seidel's on this mesh.
@@ -215,23 +228,12 @@ BenchTable benchAccuracy(const BenchOptions& options) {
         MeshingOptions finer;
         finer.maxPatchArea = meshing.maxPatchArea / 2;
         const PatchMesh finerMesh = meshScene(scene, finer);
-        const auto start = std::chrono::steady_clock::now();
-        const std::unique_ptr<Solver> solver = makeSolver(SolverMethod::Hierarchical, scene, finerMesh);
-        double residual = solver->lastStats().residual;
-        while (residual > tolerance && secondsSince(start) < budget) residual = solver->step().residual;
-        const double seconds = secondsSince(start);
-        const Probe finerProbe(scene, finerMesh, &rays);
-        std::vector<ProbeReading> finerReadings;
-        for (const AccuracyPoint& point : points)
-            finerReadings.push_back(finerProbe.measure(point.at.point, point.at.normal, solver->solution()));
-        const MethodErrors errors = errorsAgainstReference(points, finerReadings);
+        const TimedSolve run = solveToTolerance(SolverMethod::Hierarchical, finerMesh);
+        const MethodErrors errors =
+            errorsAgainstReference(points, readAll(Probe(scene, finerMesh, &rays), run.solver->solution()));
         const bool accurate = errors.meanB <= 0.002 && errors.meanE <= 0.002;
-        std::string verdict = std::string(accurate ? "met" : "missed") + "; time " + timeVerdict(seconds, 3.4);
-        if (residual > tolerance) verdict += " (residual " + formatNumber(residual, 2) + " after the budget)";
-        table.rows.push_back({"hierarchical, finer: " + formatNumber(finer.maxPatchArea, 2) + " m^2 patches",
-                              std::to_string(finerMesh.size()), formatNumber(seconds), percent(errors.meanB),
-                              percent(errors.worstB) + " (" + errors.worstBAt + ")", percent(errors.meanE),
-                              percent(errors.worstE), "-", "0.2% mean, < 3.4 s", verdict});
+        addRow("hierarchical, finer: " + formatNumber(finer.maxPatchArea, 2) + " m^2 patches", finerMesh.size(), run,
+               errors, "0.2% mean, < 3.4 s", std::string(accurate ? "met" : "missed") + "; time " + timeVerdict(run.seconds, 3.4));
     }
 
     table.notes = {

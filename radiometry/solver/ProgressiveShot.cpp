@@ -279,10 +279,8 @@ double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::si
             stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, plain);
         return again >= 0 ? again : plain;
     }
-    // A strong shot casts its penumbra pass whatever the first pass saw: stopping where the first
-    // rays agree biased its penumbrae towards 0 and 1, and the light source shoots once, so that
-    // bias stayed (on the Cornell box at the default mesh, floor patches in the short block's
-    // penumbra came out 25-30% darker than Gauss-Seidel with 64 rays, at every seed).
+    // Whatever the first pass saw (see above: on the Cornell box stopping where it agreed left floor
+    // patches in the short block's penumbra 25-30% dark at every seed).
     if (fewRays < g.options.visibilityRays || !more) return first;
     double unused = 0;
     double second =
@@ -355,9 +353,9 @@ double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_
     return sum * s.area;
 }
 
-/// A quarter of the penumbra count decides whether the receiver is in a penumbra: all 16 for the
-/// light source's shot (4 all agreeing missed small partial shadows: 10% worst per patch against
-/// Gauss-Seidel, 7% with 16), down to 2 (one a side of an edge) for weak shots.
+/// The first pass's rays, a quarter of the penumbra count: all 16 for the light source's shot, whose
+/// penumbra pass follows (shotVisibility), down to 2 (one a side of an edge) for weak shots, which
+/// cast them alone.
 int fewRaysFor(const ShotGeometry& g, int penumbraRays) {
     return std::clamp(penumbraRays / kPenumbraRayFactor, std::min(2, g.options.visibilityRays),
                       std::max(1, g.options.visibilityRays));
