@@ -120,6 +120,9 @@ public:
     [[nodiscard]] std::string activeDemo() const;
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.
     [[nodiscard]] std::string lessonError() const;
+    /// The framebuffer row (from the top) where the open lesson's caption band begins, as of the
+    /// last frame: the 3D view (sceneViewport) ends there. None without a lesson caption.
+    [[nodiscard]] std::optional<int> lessonCaptionTop() const;
 
 private:
     struct State;

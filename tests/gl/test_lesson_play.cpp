@@ -278,3 +278,35 @@ TEST_CASE("a session saved while comparing two methods reopens comparing them, i
     std::filesystem::remove(file);
 }
 } // TEST_SUITE
+
+TEST_SUITE("lesson play") {
+
+TEST_CASE("at UI scale 1.5 the lesson caption has a band below the 3D view: the probed floor point is on screen, not under it") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    LabOptions options = lessonLab();
+    options.uiScale = 1.5f;
+    Lab lab(options);
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "01-radiometric-quantities.json").string());
+    settle(lab);
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);  // the diffuse emitter
+    settle(lab);
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);  // "Irradiance at a point": the probe on the floor near the front
+    settle(lab);
+    waitForReading(lab);
+    REQUIRE(lab.probeReading());
+    lab.frame();
+    const std::optional<int> captionTop = lab.lessonCaptionTop();
+    REQUIRE(captionTop);
+    const render::Viewport view = lab.sceneViewport();
+    CHECK(view.y + view.height <= *captionTop);
+    CHECK(*captionTop < 800);  // the caption is on screen (the window is 800 high)
+    // Over the picture, the caption hid the front of the floor, where this point is.
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), view, lab.probeReading()->at.point);
+    CHECK(pixel.x > view.x);
+    CHECK(pixel.x < view.x + view.width);
+    CHECK(pixel.y > view.y);
+    CHECK(pixel.y < view.y + view.height);
+}
+
+} // TEST_SUITE
