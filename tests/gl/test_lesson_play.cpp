@@ -164,6 +164,41 @@ TEST_CASE("Page Up replays the lesson up to the earlier step: Jacobi's second sw
     lab.pressKey(GLFW_KEY_PAGE_UP);
     settle(lab);
     CHECK_FALSE(lab.comparison());
+    // "Make the lamp brighter" replayed doubles the lamp again; the step before it has the lamp as
+    // built, though the replay no longer loads the scene afresh (the materials are reset instead).
+    const auto lampRed = [&lab] {
+        const Scene& scene = *lab.snapshot()->scene;
+        return scene.materials[scene.surfaces[scene.findSurface("light")].material].exitance.value().x;
+    };
+    CHECK(lampRed() == 34.0);
+    lab.pressKey(GLFW_KEY_PAGE_UP);
+    settle(lab);
+    CHECK(lab.lessons().step() == 4);
+    CHECK(lampRed() == 17.0);
+}
+
+TEST_CASE("Page Up to an earlier step of the scene shown keeps its mesh and form factors: the replay is instant") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    Lab lab(lessonLab());
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "01-radiometric-quantities.json").string());
+    for (int step = 0; step < 3; ++step) {  // to "Irradiance at a point", past the diffuse emitter's demo
+        if (step > 0) lab.pressKey(GLFW_KEY_PAGE_DOWN);
+        settle(lab);
+    }
+    REQUIRE(lab.lessons().step() == 2);
+    const std::uint64_t builds = lab.snapshot()->solverBuilds;
+    const std::uint64_t meshGeneration = lab.snapshot()->meshGeneration;
+    lab.pressKey(GLFW_KEY_PAGE_UP);  // replays steps 1 and 2, and step 1 loads the Cornell box
+    settle(lab);
+    CHECK(lab.lessons().step() == 1);
+    CHECK(lab.lessonError().empty());
+    CHECK(lab.activeDemo() == "diffuse-emitter");
+    // Loading the box again rebuilt the solver: every form factor recomputed, the box black meanwhile.
+    CHECK(lab.snapshot()->solverBuilds == builds);
+    CHECK(lab.snapshot()->meshGeneration == meshGeneration);
+    CHECK(lab.snapshot()->method == SolverMethod::GaussSeidel);
+    CHECK(lab.snapshot()->stats.iteration > 0);  // step 1's run, solved again
 }
 
 TEST_CASE("a bad lesson file is refused in one line and the lab keeps its lesson") {
