@@ -125,7 +125,9 @@ struct Lab::State {
         auto hemisphere = std::make_unique<HemispherePanel>(hemicube);
         hemispherePanel = hemisphere.get();
         sidebar.add(std::move(hemisphere));
-        sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
+        auto integrals = std::make_unique<IntegralsPanel>(hemicube);
+        integralsPanel = integrals.get();
+        sidebar.add(std::move(integrals));
         auto demos = std::make_unique<LectureDemosPanel>(demoView);
         demosPanel = demos.get();
         sidebar.add(std::move(demos));
@@ -139,7 +141,7 @@ struct Lab::State {
         });
         lessonsPanel = lessonList.get();
         sidebar.add(std::move(lessonList));
-        stage.emplace(live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea);
+        stage.emplace(live, sidebar, *demosPanel, *probePanel, *integralsPanel, orbit, display, patchArea);
 
         live.send(command::LoadScene{initialScene, MeshingOptions{openingArea}});
         if (options.runOnStart) live.send(command::Run{});
@@ -430,6 +432,7 @@ struct Lab::State {
     ScenePanel* scenePanel = nullptr;  // owned by the sidebar
     ProbePanel* probePanel = nullptr;  // owned by the sidebar
     HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
+    IntegralsPanel* integralsPanel = nullptr;    // owned by the sidebar
     LectureDemosPanel* demosPanel = nullptr;  // owned by the sidebar
     LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
     double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with (the default, not the opening scene's)
@@ -511,6 +514,7 @@ void Lab::openLesson(const std::string& file) { state_->openLesson(file); }
 const LessonPlayer& Lab::lessons() const { return state_->lessons; }
 std::string Lab::lessonError() const { return state_->lessonError; }
 std::optional<int> Lab::lessonCaptionTop() const { return state_->captionTop; }
+const IntegralsPanel& Lab::integrals() const { return *state_->integralsPanel; }
 std::filesystem::path Lab::saveSession(const std::string& file) { return state_->saveSession(file); }
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
 void Lab::compare(bool on) { state_->live.compare(on); }

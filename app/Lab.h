@@ -25,6 +25,8 @@
 
 namespace radiant::app {
 
+class IntegralsPanel;
+
 class Lab {
 public:
     /// Opens the window on `options.scene` and sends it to the solver thread. Throws RadiantError
@@ -123,6 +125,8 @@ public:
     /// The framebuffer row (from the top) where the open lesson's caption band begins, as of the
     /// last frame: the 3D view (sceneViewport) ends there. None without a lesson caption.
     [[nodiscard]] std::optional<int> lessonCaptionTop() const;
+    /// The Integrals panel: its integrand, estimator and run (a lesson's "integrals" action sets them).
+    [[nodiscard]] const IntegralsPanel& integrals() const;
 
 private:
     struct State;

@@ -7,6 +7,7 @@
 
 #include "app/LabScene.h"
 #include "app/lessons/Lesson.h"
+#include "app/panels/IntegralsPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
 #include "app/panels/demos/LectureDemosPanel.h"
@@ -134,6 +135,18 @@ void LabLessonStage::compare(const std::optional<ComparisonSettings>& settings) 
     demos_.closeDemo();  // the comparison is of the scene's solutions
     live_.setComparison(*settings);  // changes B while comparing; otherwise what compare(true) starts
     live_.compare(true);
+}
+
+void LabLessonStage::setIntegrals(const lesson::SetIntegrals& set) {
+    IntegralSettings settings;  // a full run of the panel's default size and seed: the same samples each time
+    settings.method = set.method == "riemann"      ? IntegralMethod::Riemann
+                      : set.method == "cosine-mc" ? IntegralMethod::CosineMonteCarlo
+                                                  : IntegralMethod::UniformMonteCarlo;  // the reader takes only these
+    if (set.thetaCells) settings.thetaCells = *set.thetaCells;
+    integrals_.select(set.integrand == "d-omega" ? HemisphereIntegrand::SolidAngle
+                                                 : HemisphereIntegrand::ProjectedSolidAngle,
+                      settings);
+    integrals_.run(set.run);
 }
 
 } // namespace radiant::app

@@ -8,6 +8,7 @@
 #include <thread>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/Lab.h"
+#include "app/panels/IntegralsPanel.h"
 #include "app/lessons/Lesson.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
@@ -94,6 +96,16 @@ void checkStep(Lab& lab, const lesson::LessonStep& step) {
             if (display->links) CHECK(lab.display().showLinks == *display->links);
             if (display->importance) CHECK(lab.display().showImportance == *display->importance);
             if (display->photometric) CHECK(lab.display().photometric == *display->photometric);
+        }
+        if (const auto* integrals = std::get_if<lesson::SetIntegrals>(&action)) {
+            const app::HemisphereIntegralRun& run = lab.integrals().current();
+            const app::IntegralMethod expected = integrals->method == "riemann"     ? app::IntegralMethod::Riemann
+                                            : integrals->method == "cosine-mc" ? app::IntegralMethod::CosineMonteCarlo
+                                                                               : app::IntegralMethod::UniformMonteCarlo;
+            CHECK(run.settings().method == expected);
+            // 2 pi sr or pi sr: which integrand the panel took.
+            CHECK(run.exact() == doctest::Approx(integrals->integrand == "d-omega" ? 2 * std::numbers::pi : std::numbers::pi));
+            if (integrals->run) CHECK(run.taken() > 0);
         }
         // Solved (importance-driven radiosity may be solving again for the camera the step placed).
         if (std::holds_alternative<lesson::Run>(action)) CHECK(s.stats.iteration > 0);
