@@ -125,7 +125,9 @@ struct Lab::State {
         auto hemisphere = std::make_unique<HemispherePanel>(hemicube);
         hemispherePanel = hemisphere.get();
         sidebar.add(std::move(hemisphere));
-        sidebar.add(std::make_unique<IntegralsPanel>(hemicube));
+        auto integrals = std::make_unique<IntegralsPanel>(hemicube);
+        integralsPanel = integrals.get();
+        sidebar.add(std::move(integrals));
         auto demos = std::make_unique<LectureDemosPanel>(demoView);
         demosPanel = demos.get();
         sidebar.add(std::move(demos));
@@ -139,7 +141,7 @@ struct Lab::State {
         });
         lessonsPanel = lessonList.get();
         sidebar.add(std::move(lessonList));
-        stage.emplace(live, sidebar, *demosPanel, *probePanel, orbit, display, patchArea);
+        stage.emplace(live, sidebar, *demosPanel, *probePanel, *integralsPanel, orbit, display, patchArea);
 
         live.send(command::LoadScene{initialScene, MeshingOptions{openingArea}});
         if (options.runOnStart) live.send(command::Run{});
@@ -317,10 +319,22 @@ struct Lab::State {
 
         const float sidebarWidth = panelsVisible ? sidebar.draw("Radiant", sceneLabel(sceneShown)) : 0.0f;
         const int sidebarPixels = static_cast<int>(std::lround(sidebarWidth * pixelRatio));
-        viewport = {sidebarPixels, 0, std::max(1, width - sidebarPixels), std::max(1, height)};
-        const render::Viewport viewInUiUnits{static_cast<int>(sidebarWidth), 0,
-                                             static_cast<int>(static_cast<float>(viewport.width) / pixelRatio),
-                                             static_cast<int>(static_cast<float>(viewport.height) / pixelRatio)};
+        // Right of the sidebar, the whole window's height: the status bar lies over the picture's
+        // bottom edge, translucent; a lesson's caption takes a band of its own below the picture.
+        const render::Viewport wholeView{static_cast<int>(sidebarWidth), 0,
+                                         static_cast<int>(static_cast<float>(std::max(1, width - sidebarPixels)) / pixelRatio),
+                                         static_cast<int>(static_cast<float>(std::max(1, height)) / pixelRatio)};
+        const float statusHeight = panelsVisible ? drawStatusBar(wholeView, status()) : 0.0f;
+        render::Viewport aboveStatus = wholeView;
+        aboveStatus.height = std::max(1, aboveStatus.height - static_cast<int>(std::ceil(statusHeight)));
+        const float captionBand = drawLessonCaption(lessons, aboveStatus);
+        const int belowPicture = captionBand > 0.0f ? static_cast<int>(std::ceil(statusHeight + captionBand)) : 0;
+        render::Viewport viewInUiUnits = wholeView;
+        viewInUiUnits.height = std::max(1, wholeView.height - belowPicture);
+        captionTop = captionBand > 0.0f ? std::optional<int>(static_cast<int>(std::lround(static_cast<float>(viewInUiUnits.height) * pixelRatio)))
+                                        : std::nullopt;
+        viewport = {sidebarPixels, 0, std::max(1, width - sidebarPixels),
+                    std::max(1, captionTop ? *captionTop : height)};
         // Folding the demos' header away (sidebar shown) closes the demo, as closing its section does.
         if (panelsVisible && demoView.active() && !demosPanel->drawn()) demosPanel->closeDemo();
         const LectureDemo* demo = demoView.active();
@@ -330,10 +344,6 @@ struct Lab::State {
         if (const std::optional<glm::dvec2> click = controller.click(); click && !demo)
             pickAt(*click * static_cast<double>(pixelRatio));
         followPick();
-        const float statusHeight = panelsVisible ? drawStatusBar(viewInUiUnits, status()) : 0.0f;
-        render::Viewport aboveStatus = viewInUiUnits;
-        aboveStatus.height = std::max(1, aboveStatus.height - static_cast<int>(std::ceil(statusHeight)));
-        drawLessonCaption(lessons, aboveStatus);
         if (!demo && !comparison->drawOverlays(viewInUiUnits) && display.colourMode == render::ColourMode::FalseColour)
             drawLegendOverlay(patches->legend(), viewInUiUnits);
 
@@ -422,12 +432,14 @@ struct Lab::State {
     ScenePanel* scenePanel = nullptr;  // owned by the sidebar
     ProbePanel* probePanel = nullptr;  // owned by the sidebar
     HemispherePanel* hemispherePanel = nullptr;  // owned by the sidebar
+    IntegralsPanel* integralsPanel = nullptr;    // owned by the sidebar
     LectureDemosPanel* demosPanel = nullptr;  // owned by the sidebar
     LessonsPanel* lessonsPanel = nullptr;     // owned by the sidebar
     double patchArea;  ///< m^2: what the lab meshes a lesson's scenes with (the default, not the opening scene's)
     LessonPlayer lessons;
     std::optional<LabLessonStage> stage;  ///< made once the panels it drives exist
     std::string lessonError;
+    std::optional<int> captionTop;  ///< framebuffer row where the lesson caption's band begins; none without a caption
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;
@@ -501,6 +513,8 @@ void Lab::focusPanel(const std::string& title) { state_->sidebar.focus(title); }
 void Lab::openLesson(const std::string& file) { state_->openLesson(file); }
 const LessonPlayer& Lab::lessons() const { return state_->lessons; }
 std::string Lab::lessonError() const { return state_->lessonError; }
+std::optional<int> Lab::lessonCaptionTop() const { return state_->captionTop; }
+const IntegralsPanel& Lab::integrals() const { return *state_->integralsPanel; }
 std::filesystem::path Lab::saveSession(const std::string& file) { return state_->saveSession(file); }
 void Lab::waitForSolver() { state_->solverThread.waitUntilIdle(); }
 void Lab::compare(bool on) { state_->live.compare(on); }

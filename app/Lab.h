@@ -25,6 +25,8 @@
 
 namespace radiant::app {
 
+class IntegralsPanel;
+
 class Lab {
 public:
     /// Opens the window on `options.scene` and sends it to the solver thread. Throws RadiantError
@@ -120,6 +122,11 @@ public:
     [[nodiscard]] std::string activeDemo() const;
     /// The last lesson action the lab refused (empty: none), also shown in the status bar.
     [[nodiscard]] std::string lessonError() const;
+    /// The framebuffer row (from the top) where the open lesson's caption band begins, as of the
+    /// last frame: the 3D view (sceneViewport) ends there. None without a lesson caption.
+    [[nodiscard]] std::optional<int> lessonCaptionTop() const;
+    /// The Integrals panel: its integrand, estimator and run (a lesson's "integrals" action sets them).
+    [[nodiscard]] const IntegralsPanel& integrals() const;
 
 private:
     struct State;

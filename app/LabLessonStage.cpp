@@ -7,6 +7,7 @@
 
 #include "app/LabScene.h"
 #include "app/lessons/Lesson.h"
+#include "app/panels/IntegralsPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
 #include "app/panels/demos/LectureDemosPanel.h"
@@ -15,15 +16,43 @@
 
 namespace radiant::app {
 
+namespace {
+
+/// The shown scene is `scene` as loaded, meshed at `patchArea`: the same name and surfaces (a lesson
+/// names a built-in scene or a file; materials may have been edited since, ResetMaterials undoes that).
+bool showsAlready(const Snapshot& shown, const Scene& scene, double patchArea) {
+    return shown.scene && shown.mesh && shown.scene->name == scene.name &&
+           shown.scene->surfaces.size() == scene.surfaces.size() && shown.meshing.maxPatchArea == patchArea;
+}
+
+} // namespace
+
 void LabLessonStage::loadScene(const std::string& nameOrPath) {
-    awaitedScene_ = openScene(nameOrPath);
+    std::shared_ptr<const Scene> scene = openScene(nameOrPath);
     demos_.closeDemo();  // the step is about the scene: the 3D view shows it again
-    awaitedAfter_ = live_.snapshot().meshGeneration;
+    const Snapshot& shown = live_.snapshot();
+    // Page Up replays the lesson from its first step, which loads the scene the lab already shows:
+    // loading it again recomputed every form factor (a minute of black box on a busy 2-core
+    // laptop, the Probe panel reading the old E against a zero B meanwhile). Its materials as
+    // loaded are all the load would change; the mesh, form factors and probe point stay.
+    if (showsAlready(shown, *scene, patchArea_)) {
+        live_.send(command::ResetMaterials{});
+        awaitedScene_.reset();
+        awaitedAfter_ = shown.meshGeneration - 1;  // ready now
+        return;
+    }
+    awaitedScene_ = std::move(scene);
+    awaitedAfter_ = shown.meshGeneration;
     live_.send(command::LoadScene{awaitedScene_, MeshingOptions{patchArea_}});
 }
 
 void LabLessonStage::remesh(double maxPatchAreaM2) {
     patchArea_ = maxPatchAreaM2;
+    if (const Snapshot& shown = live_.snapshot(); shown.mesh && shown.meshing.maxPatchArea == maxPatchAreaM2) {
+        awaitedScene_.reset();
+        awaitedAfter_ = shown.meshGeneration - 1;  // meshed so already (a replayed step): nothing to redo
+        return;
+    }
     awaitedScene_.reset();  // the shown scene, whatever its materials
     awaitedAfter_ = live_.snapshot().meshGeneration;
     live_.send(command::Remesh{MeshingOptions{maxPatchAreaM2}});
@@ -106,6 +135,18 @@ void LabLessonStage::compare(const std::optional<ComparisonSettings>& settings) 
     demos_.closeDemo();  // the comparison is of the scene's solutions
     live_.setComparison(*settings);  // changes B while comparing; otherwise what compare(true) starts
     live_.compare(true);
+}
+
+void LabLessonStage::setIntegrals(const lesson::SetIntegrals& set) {
+    IntegralSettings settings;  // a full run of the panel's default size and seed: the same samples each time
+    settings.method = set.method == "riemann"      ? IntegralMethod::Riemann
+                      : set.method == "cosine-mc" ? IntegralMethod::CosineMonteCarlo
+                                                  : IntegralMethod::UniformMonteCarlo;  // the reader takes only these
+    if (set.thetaCells) settings.thetaCells = *set.thetaCells;
+    integrals_.select(set.integrand == "d-omega" ? HemisphereIntegrand::SolidAngle
+                                                 : HemisphereIntegrand::ProjectedSolidAngle,
+                      settings);
+    integrals_.run(set.run);
 }
 
 } // namespace radiant::app

@@ -16,14 +16,16 @@ namespace radiant::app {
 class Sidebar;
 class LectureDemosPanel;
 class ProbePanel;
+class IntegralsPanel;
 
 class LabLessonStage final : public LessonStage {
 public:
     /// Keeps references; `patchArea` (m^2) is what scenes are meshed with, and a remesh updates it.
     LabLessonStage(LiveSolve& live, Sidebar& sidebar, LectureDemosPanel& demos, ProbePanel& probe,
-                   render::OrbitCamera& orbit, render::DisplaySettings& display, double& patchArea)
-        : live_(live), sidebar_(sidebar), demos_(demos), probe_(probe), orbit_(orbit), display_(display),
-          patchArea_(patchArea) {}
+                   IntegralsPanel& integrals, render::OrbitCamera& orbit, render::DisplaySettings& display,
+                   double& patchArea)
+        : live_(live), sidebar_(sidebar), demos_(demos), probe_(probe), integrals_(integrals), orbit_(orbit),
+          display_(display), patchArea_(patchArea) {}
 
     void loadScene(const std::string& nameOrPath) override;
     void remesh(double maxPatchAreaM2) override;
@@ -36,12 +38,14 @@ public:
     void openPanel(const std::string& title) override;
     render::DisplaySettings& display() override { return display_; }
     void compare(const std::optional<ComparisonSettings>& settings) override;
+    void setIntegrals(const lesson::SetIntegrals& integrals) override;
 
 private:
     LiveSolve& live_;
     Sidebar& sidebar_;
     LectureDemosPanel& demos_;
     ProbePanel& probe_;
+    IntegralsPanel& integrals_;
     render::OrbitCamera& orbit_;
     render::DisplaySettings& display_;
     double& patchArea_;

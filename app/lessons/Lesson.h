@@ -76,6 +76,14 @@ struct SetDisplay {
     std::optional<double> exposureStops;
     std::optional<bool> photometric;  ///< lx and cd/m^2 instead of W/m^2
 };
+/// The Integrals panel's hemisphere integral (IntegralsPanel.h): the geometric integrands, whose
+/// exact values need no solve, by one of its three estimators, started when `run`.
+struct SetIntegrals {
+    std::string integrand;              ///< "d-omega" (2 pi sr) or "cos-d-omega" (pi sr)
+    std::string method;                 ///< "riemann", "uniform-mc" or "cosine-mc"
+    std::optional<int> thetaCells;      ///< Riemann: the grid's theta cells, 2 to 64 (the panel's slider)
+    bool run = false;
+};
 /// Two methods side by side (app/solver/Comparison.h): B's method, its mesh and the view; none ends
 /// the comparison.
 struct Compare {
@@ -83,7 +91,7 @@ struct Compare {
 };
 
 using Action = std::variant<LoadScene, OpenDemo, SetMethod, SetTolerance, SetMeshing, SetLinkTolerance, SetMaterial,
-                            PlaceCamera, Run, Pause, Reset, Step, Probe, OpenPanel, SetDisplay, Compare>;
+                            PlaceCamera, Run, Pause, Reset, Step, Probe, OpenPanel, SetDisplay, Compare, SetIntegrals>;
 
 struct LessonStep {
     std::string title;

@@ -199,10 +199,12 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
         if (value.get<bool>()) at.fail(key, "true says nothing of B: give {\"method\": ...}, or false to end it");
         return Compare{};
     }
-    if (key != "material" && key != "camera" && key != "probe" && key != "display" && key != "compare")
+    if (key != "material" && key != "camera" && key != "probe" && key != "display" && key != "compare" &&
+        key != "integrals")
         at.fail("", "unknown action '" + key +
                         "' (expected scene, demo, method, tolerance, max_patch_area_m2, link_tolerance, material, "
-                        "camera, step, probe, panel, display, compare, or \"run\", \"pause\", \"reset\", \"home-camera\")");
+                        "camera, step, probe, panel, display, compare, integrals, or \"run\", \"pause\", \"reset\", "
+                        "\"home-camera\")");
     if (!value.is_object()) at.fail(key, "expected an object, found " + value.dump());
     if (key == "material") {
         rejectUnknownKeys(at, value, {"surface", "reflectance", "exitance_W_m2"});
@@ -240,6 +242,25 @@ Action readAction(const Place& at, const Json& json, SceneCache& scenes, const C
             settings.view = view == "difference" ? ComparisonView::Difference : ComparisonView::SideBySide;
         }
         return Compare{settings};
+    }
+    if (key == "integrals") {
+        rejectUnknownKeys(at, value, {"integrand", "method", "theta_cells", "run"});
+        SetIntegrals integrals;
+        integrals.integrand = text(at, member(at, value, "integrand"), "integrand");
+        if (integrals.integrand != "d-omega" && integrals.integrand != "cos-d-omega")
+            at.fail("integrand", "unknown integrand '" + integrals.integrand + "' (expected d-omega or cos-d-omega)");
+        integrals.method = text(at, member(at, value, "method"), "method");
+        if (integrals.method != "riemann" && integrals.method != "uniform-mc" && integrals.method != "cosine-mc")
+            at.fail("method", "unknown method '" + integrals.method + "' (expected riemann, uniform-mc or cosine-mc)");
+        if (value.contains("theta_cells")) {
+            const Json& cells = value["theta_cells"];
+            if (!cells.is_number_integer() || cells.get<long long>() < 2 || cells.get<long long>() > 64)
+                at.fail("theta_cells", "expected a whole number from 2 to 64, found " + cells.dump());
+            if (integrals.method != "riemann") at.fail("theta_cells", "only a Riemann sum has theta cells");
+            integrals.thetaCells = static_cast<int>(cells.get<long long>());
+        }
+        if (value.contains("run")) integrals.run = flag(at, value["run"], "run");
+        return integrals;
     }
     if (key == "probe") {
         rejectUnknownKeys(at, value, {"point", "normal", "target"});

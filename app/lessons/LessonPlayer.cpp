@@ -107,6 +107,8 @@ bool LessonPlayer::perform(const lesson::Action& action, LessonStage& stage) {
                 if (a.photometric) display.photometric = *a.photometric;
             } else if constexpr (std::is_same_v<A, lesson::Compare>) {
                 stage.compare(a.settings);
+            } else if constexpr (std::is_same_v<A, lesson::SetIntegrals>) {
+                stage.setIntegrals(a);
             }
             return true;
         },

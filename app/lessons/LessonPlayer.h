@@ -32,6 +32,8 @@ public:
     virtual render::DisplaySettings& display() = 0;
     /// Starts (or changes) two methods side by side; nullopt ends the comparison.
     virtual void compare(const std::optional<ComparisonSettings>& settings) = 0;
+    /// Sets up (and maybe starts) the Integrals panel's hemisphere integral.
+    virtual void setIntegrals(const lesson::SetIntegrals& integrals) = 0;
 };
 
 class LessonPlayer {

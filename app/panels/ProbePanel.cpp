@@ -222,6 +222,9 @@ void ProbePanel::draw() {
         ui::wrappedText("Gathers over %zu links on %zu levels of the element tree (Display: Links shows them)",
                            snapshot.focusLinkSegments->size() / 2, snapshot.focusLevels);
     }
+    // The independent check last: above it, the target's solid angle and form factor fell below
+    // the window's bottom at UI scale 1.5 (lesson 02's "What a point sees" is about them).
+    if (pick_ && reading_) drawPathTraced(*reading_);
 }
 
 void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
@@ -274,7 +277,6 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
             ImGui::SetTooltip("Luminance: 179 lm/W x (0.265 L_r + 0.670 L_g + 0.065 L_b), Radiance's convention");
     }
     if (live_.secondCurrent) drawComparison(reading, *live_.secondCurrent);
-    drawPathTraced(reading);
 }
 
 void ProbePanel::drawComparison(const ProbeReading& a, const Snapshot& secondSnapshot) {

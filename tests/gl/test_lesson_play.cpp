@@ -8,6 +8,7 @@
 #include <thread>
 #include <cmath>
 #include <cstdlib>
+#include <numbers>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -18,6 +19,7 @@
 #include <GLFW/glfw3.h>
 
 #include "app/Lab.h"
+#include "app/panels/IntegralsPanel.h"
 #include "app/lessons/Lesson.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/scene/SceneLibrary.h"
@@ -95,6 +97,16 @@ void checkStep(Lab& lab, const lesson::LessonStep& step) {
             if (display->importance) CHECK(lab.display().showImportance == *display->importance);
             if (display->photometric) CHECK(lab.display().photometric == *display->photometric);
         }
+        if (const auto* integrals = std::get_if<lesson::SetIntegrals>(&action)) {
+            const app::HemisphereIntegralRun& run = lab.integrals().current();
+            const app::IntegralMethod expected = integrals->method == "riemann"     ? app::IntegralMethod::Riemann
+                                            : integrals->method == "cosine-mc" ? app::IntegralMethod::CosineMonteCarlo
+                                                                               : app::IntegralMethod::UniformMonteCarlo;
+            CHECK(run.settings().method == expected);
+            // 2 pi sr or pi sr: which integrand the panel took.
+            CHECK(run.exact() == doctest::Approx(integrals->integrand == "d-omega" ? 2 * std::numbers::pi : std::numbers::pi));
+            if (integrals->run) CHECK(run.taken() > 0);
+        }
         // Solved (importance-driven radiosity may be solving again for the camera the step placed).
         if (std::holds_alternative<lesson::Run>(action)) CHECK(s.stats.iteration > 0);
     }
@@ -164,6 +176,41 @@ TEST_CASE("Page Up replays the lesson up to the earlier step: Jacobi's second sw
     lab.pressKey(GLFW_KEY_PAGE_UP);
     settle(lab);
     CHECK_FALSE(lab.comparison());
+    // "Make the lamp brighter" replayed doubles the lamp again; the step before it has the lamp as
+    // built, though the replay no longer loads the scene afresh (the materials are reset instead).
+    const auto lampRed = [&lab] {
+        const Scene& scene = *lab.snapshot()->scene;
+        return scene.materials[scene.surfaces[scene.findSurface("light")].material].exitance.value().x;
+    };
+    CHECK(lampRed() == 34.0);
+    lab.pressKey(GLFW_KEY_PAGE_UP);
+    settle(lab);
+    CHECK(lab.lessons().step() == 4);
+    CHECK(lampRed() == 17.0);
+}
+
+TEST_CASE("Page Up to an earlier step of the scene shown keeps its mesh and form factors: the replay is instant") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    Lab lab(lessonLab());
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "01-radiometric-quantities.json").string());
+    for (int step = 0; step < 3; ++step) {  // to "Irradiance at a point", past the diffuse emitter's demo
+        if (step > 0) lab.pressKey(GLFW_KEY_PAGE_DOWN);
+        settle(lab);
+    }
+    REQUIRE(lab.lessons().step() == 2);
+    const std::uint64_t builds = lab.snapshot()->solverBuilds;
+    const std::uint64_t meshGeneration = lab.snapshot()->meshGeneration;
+    lab.pressKey(GLFW_KEY_PAGE_UP);  // replays steps 1 and 2, and step 1 loads the Cornell box
+    settle(lab);
+    CHECK(lab.lessons().step() == 1);
+    CHECK(lab.lessonError().empty());
+    CHECK(lab.activeDemo() == "diffuse-emitter");
+    // Loading the box again rebuilt the solver: every form factor recomputed, the box black meanwhile.
+    CHECK(lab.snapshot()->solverBuilds == builds);
+    CHECK(lab.snapshot()->meshGeneration == meshGeneration);
+    CHECK(lab.snapshot()->method == SolverMethod::GaussSeidel);
+    CHECK(lab.snapshot()->stats.iteration > 0);  // step 1's run, solved again
 }
 
 TEST_CASE("a bad lesson file is refused in one line and the lab keeps its lesson") {
@@ -277,4 +324,36 @@ TEST_CASE("a session saved while comparing two methods reopens comparing them, i
     CHECK_FALSE(reopened.comparison());
     std::filesystem::remove(file);
 }
+} // TEST_SUITE
+
+TEST_SUITE("lesson play") {
+
+TEST_CASE("at UI scale 1.5 the lesson caption has a band below the 3D view: the probed floor point is on screen, not under it") {
+    const char* display = std::getenv("DISPLAY");
+    REQUIRE_MESSAGE((display && *display), "no X display: run the GL tests under Xvfb");
+    LabOptions options = lessonLab();
+    options.uiScale = 1.5f;
+    Lab lab(options);
+    lab.openLesson((std::filesystem::path(assetDirectory()) / "lessons" / "01-radiometric-quantities.json").string());
+    settle(lab);
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);  // the diffuse emitter
+    settle(lab);
+    lab.pressKey(GLFW_KEY_PAGE_DOWN);  // "Irradiance at a point": the probe on the floor near the front
+    settle(lab);
+    waitForReading(lab);
+    REQUIRE(lab.probeReading());
+    lab.frame();
+    const std::optional<int> captionTop = lab.lessonCaptionTop();
+    REQUIRE(captionTop);
+    const render::Viewport view = lab.sceneViewport();
+    CHECK(view.y + view.height <= *captionTop);
+    CHECK(*captionTop < 800);  // the caption is on screen (the window is 800 high)
+    // Over the picture, the caption hid the front of the floor, where this point is.
+    const glm::dvec3 pixel = render::projectToPixel(lab.camera(), view, lab.probeReading()->at.point);
+    CHECK(pixel.x > view.x);
+    CHECK(pixel.x < view.x + view.width);
+    CHECK(pixel.y > view.y);
+    CHECK(pixel.y < view.y + view.height);
+}
+
 } // TEST_SUITE

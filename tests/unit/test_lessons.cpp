@@ -83,6 +83,32 @@ TEST_CASE("a lesson's actions come out as the values the lab plays") {
     CHECK(std::get<SetMeshing>(actions[8]).maxPatchAreaM2 == 0.01);
 }
 
+TEST_CASE("an integrals action comes out as the Integrals panel's settings, and a bad one is refused naming its field") {
+    const Lesson lesson = parseLesson(
+        withAction(R"({"integrals": {"integrand": "cos-d-omega", "method": "riemann", "theta_cells": 8, "run": true}},
+                      {"integrals": {"integrand": "d-omega", "method": "cosine-mc"}})"),
+        "lesson.json");
+    const std::vector<Action>& actions = lesson.steps.at(0).actions;
+    REQUIRE(actions.size() == 3);
+    const SetIntegrals& riemann = std::get<SetIntegrals>(actions[1]);
+    CHECK(riemann.integrand == "cos-d-omega");
+    CHECK(riemann.method == "riemann");
+    CHECK(*riemann.thetaCells == 8);
+    CHECK(riemann.run);
+    const SetIntegrals& cosine = std::get<SetIntegrals>(actions[2]);
+    CHECK(cosine.integrand == "d-omega");
+    CHECK_FALSE(cosine.thetaCells);
+    CHECK_FALSE(cosine.run);  // set up, not started, unless the lesson says so
+
+    CHECK(refusal(withAction(R"({"integrals": {"integrand": "L", "method": "riemann"}})")) ==
+          "bad.json: step 1 ('first'), action 2 (integrals), integrand: unknown integrand 'L' (expected d-omega or "
+          "cos-d-omega)");
+    CHECK(refusal(withAction(R"({"integrals": {"integrand": "d-omega", "method": "uniform-mc", "theta_cells": 8}})")) ==
+          "bad.json: step 1 ('first'), action 2 (integrals), theta_cells: only a Riemann sum has theta cells");
+    CHECK(refusal(withAction(R"({"integrals": {"integrand": "d-omega", "method": "riemann", "theta_cells": 65}})")) ==
+          "bad.json: step 1 ('first'), action 2 (integrals), theta_cells: expected a whole number from 2 to 64, found 65");
+}
+
 TEST_CASE("bad lessons are refused in one line naming the step, the action and the field") {
     // Syntax: the place, not the text (which may be long).
     const std::string syntax = refusal("{\"title\": \"t\",\n \"steps\": [ {\"title\": } ]}");

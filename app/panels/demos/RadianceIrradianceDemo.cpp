@@ -68,7 +68,7 @@ render::DemoDrawing RadianceIrradianceDemo::picture(const std::optional<PickRay>
             const glm::vec3 hit = onReceiver(x, v);
             d.line(glm::vec3(hit.x, top - 0.3f, hit.z), hit, kLight, 1.5f);
         }
-    d.label(point3(-0.45, top - 0.85, 0.0), printed("radiance along each ray: L = %.4g (any tilt)", n.radiance.value()), kLight);
+    d.label(point3(-0.45, top - 0.85, 0.0), printed("radiance along each ray: L = %.4g W/(m^2 sr) (any tilt)", n.radiance.value()), kLight);
 
     // The beam's cross-section the receiver intercepts: 1 m by cos theta m.
     const float y = 1.9f;

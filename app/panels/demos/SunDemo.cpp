@@ -124,7 +124,7 @@ render::DemoDrawing SunDemo::picture(const std::optional<PickRay>&) const {
         // The movable planet's numbers beside its point on the plot, clear of Earth's and Mars'.
         const bool movable = p.numbers == &yours;
         d.label(movable ? point3(x + 0.15, plotY(p.au) + 0.2, 0) : point3(x - 0.1, p.labelY, 0),
-                printed("%s, %.4g au\nomega = %.4g sr\nE = L omega = %.4g W/m^2\nL = %.3g (the same)", p.name, p.au,
+                printed("%s, %.4g au\nomega = %.4g sr\nE = L omega = %.4g W/m^2\nL = %.3g W/(m^2 sr) (the same)", p.name, p.au,
                         p.numbers->exactSolidAngle.value(), p.numbers->irradiance.value(), n.radiance.value()),
                 p.colour);
     }
