@@ -17,6 +17,7 @@
 #include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/FormFactorMatrixBudget.h"
 #include "radiometry/solver/GroupedSolver.h"
+#include "radiometry/solver/GatheringSolver.h"
 #include "radiometry/solver/HierarchicalSolver.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/WorkerPool.h"
@@ -54,6 +55,11 @@ struct SolverThread::State {
     std::shared_ptr<const Scene> solverScene;
     std::shared_ptr<const PatchMesh> solverMesh;
     std::shared_ptr<const PatchGroups> solverGroups;
+    /// The form factors of the last Jacobi or Gauss-Seidel solver of the patches of `keptMatrixMesh`:
+    /// switching between the two on the same mesh reuses them (the lecture's Jacobi-against-Gauss-Seidel
+    /// moment, and a lesson replayed by Page Up, recomputed the same matrix each time).
+    std::shared_ptr<const FormFactorMatrix> keptMatrix;
+    std::shared_ptr<const PatchMesh> keptMatrixMesh;
     SolverMethod method = kSolveDefaults.method;
     /// The user picked `method` (SetMethod) for this scene; otherwise each new mesh chooses it by its
     /// size (DefaultMethod.h) and `methodReason` says why.
@@ -350,6 +356,10 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 state.methodPicked = true;
                 state.methodReason.clear();
                 if (c.method != state.method || !state.solver) {
+                    if (state.solver && !state.solverGroups && state.solver->formFactorMatrix()) {
+                        state.keptMatrix = state.solver->formFactorMatrix();
+                        state.keptMatrixMesh = state.solverMesh;
+                    }
                     state.method = c.method;
                     // Hierarchical takes no groups (it solves the patches); a picked method may
                     // group where the default would not (beyond kProgressiveMaxPatches groups).
@@ -458,9 +468,21 @@ void SolverThread::ensureSolver(State& state) {
     SolverOptions options = options_;
     if (state.view) options.view = state.view;
     options.rays = state.rays;
-    state.solver = state.solverGroups ? makeGroupedSolver(state.method, *state.solverScene, *state.solverMesh,
-                                                          state.solverGroups, options, &progress_)
-                                      : factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
+    const bool gathering = state.method == SolverMethod::Jacobi || state.method == SolverMethod::GaussSeidel;
+    if (state.keptMatrixMesh != state.mesh) {  // a new mesh: the kept form factors are another mesh's
+        state.keptMatrix.reset();
+        state.keptMatrixMesh.reset();
+    }
+    if (!state.solverGroups && gathering && state.keptMatrix) {
+        // The materials as the factories make them: with the punctual lights' shadow rays.
+        PatchMaterials materials = PatchMaterials::from(*state.solverScene, *state.solverMesh, options.rays.get());
+        state.solver = state.method == SolverMethod::Jacobi ? makeJacobiSolver(std::move(materials), state.keptMatrix)
+                                                            : makeGaussSeidelSolver(std::move(materials), state.keptMatrix);
+    } else {
+        state.solver = state.solverGroups ? makeGroupedSolver(state.method, *state.solverScene, *state.solverMesh,
+                                                              state.solverGroups, options, &progress_)
+                                          : factory_(state.method, *state.solverScene, *state.solverMesh, options, &progress_);
+    }
     activity_.store(SolverActivity::Idle);
 }
 

@@ -25,6 +25,7 @@ public:
     [[nodiscard]] const IterationStats& lastStats() const final { return stats_; }
 
     [[nodiscard]] const FormFactorMatrix& matrix() const { return *matrix_; }
+    [[nodiscard]] std::shared_ptr<const FormFactorMatrix> formFactorMatrix() const final { return matrix_; }
     /// Memory held: the matrix and the per-patch arrays.
     [[nodiscard]] std::size_t bytes() const override;
 

@@ -24,6 +24,7 @@
 
 namespace radiant {
 
+class FormFactorMatrix;
 class HierarchicalSolver;
 class RayCaster;
 
@@ -86,6 +87,9 @@ public:
     // Capabilities: what a method has beyond the solution, asked here instead of by casting.
     /// Bytes the solver holds (form factors, links, elements); 0 when it does not count them.
     [[nodiscard]] virtual std::size_t bytes() const { return 0; }
+    /// The form-factor matrix the solver gathers over (Jacobi, Gauss-Seidel on the patches); null
+    /// otherwise. Geometric only: another gathering solver of the same mesh may share it.
+    [[nodiscard]] virtual std::shared_ptr<const FormFactorMatrix> formFactorMatrix() const { return nullptr; }
     /// The element hierarchy and its links, for methods that refine one; null otherwise.
     [[nodiscard]] virtual const HierarchicalSolver* hierarchy() const { return nullptr; }
     /// Per-patch importance (view-dependent methods); empty otherwise.

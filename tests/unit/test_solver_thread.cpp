@@ -291,6 +291,53 @@ TEST_CASE("the lab's patch groups: each mesh grouped at its area, the default ch
     CHECK(snapshot->groupingReason.find("hierarchical refines its own elements and takes no groups") != std::string::npos);
 }
 
+TEST_CASE("switching between Jacobi and Gauss-Seidel on the same mesh reuses the form factors, and both reach the furnace's E / (1 - rho)") {
+    // The lecture's comparison (and a lesson replayed by Page Up) recomputed the same matrix at
+    // every switch. The factory runs only for matrices actually computed.
+    std::atomic<int> computed{0};
+    const SolverFactory counting = [&computed](SolverMethod method, const Scene& scene, const PatchMesh& mesh, const SolverOptions& o,
+                                               Progress* progress) {
+        ++computed;
+        return makeSolver(method, scene, mesh, o, progress);
+    };
+    auto furnace = std::make_shared<const Scene>(loadScene("furnace").scene);
+    SolverThread thread({}, counting);
+    thread.send(command::LoadScene{furnace, MeshingOptions{0.1}});
+    const auto converged = [&](SolverMethod method) {
+        thread.send(command::SetMethod{method});
+        thread.send(command::Step{60});
+        thread.waitUntilIdle();
+        const auto snapshot = thread.snapshot();
+        REQUIRE(snapshot->error.empty());
+        REQUIRE(snapshot->mesh);
+        REQUIRE(snapshot->radiosity.size() == snapshot->mesh->size());
+        CHECK(snapshot->method == method);
+        double worst = 0;
+        for (std::size_t i = 0; i < snapshot->mesh->size(); ++i) {
+            const Material& m = furnace->materials[furnace->surfaces[snapshot->mesh->patches[i].surface].material];
+            for (int band = 0; band < 3; ++band) {
+                const double exact = m.exitance.value()[band] / (1 - m.reflectance[band]);
+                worst = std::max(worst, std::abs(snapshot->radiosity[i][band] / exact - 1));
+            }
+        }
+        return worst;
+    };
+    CHECK(converged(SolverMethod::Jacobi) < 2e-3);
+    const int first = computed.load();  // the opening default method's solver, then Jacobi's
+    CHECK(converged(SolverMethod::GaussSeidel) < 2e-3);
+    CHECK(converged(SolverMethod::Jacobi) < 2e-3);
+    CHECK(computed.load() == first);  // one matrix for the three solvers
+    // Another method between them keeps the matrix.
+    thread.send(command::SetMethod{SolverMethod::Progressive});
+    thread.send(command::Step{1});
+    CHECK(converged(SolverMethod::GaussSeidel) < 2e-3);
+    CHECK(computed.load() == first + 1);  // the progressive solver, none for Gauss-Seidel
+    // A new mesh computes the picked method's matrix once, which the switch back to Jacobi reuses.
+    thread.send(command::Remesh{MeshingOptions{0.05}});
+    CHECK(converged(SolverMethod::Jacobi) < 2e-3);
+    CHECK(computed.load() == first + 2);
+}
+
 TEST_CASE("hierarchical solvers publish their links as segments between the elements they join, others none") {
     auto plates = std::make_shared<const Scene>(loadScene("parallel-plates").scene);
     SolverThread thread;
