@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numbers>
 #include <unordered_map>
 #include <utility>
 
@@ -418,6 +419,53 @@ ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* w
             if (usable(surface.faces[g])) result[s][g] = conformingPieces(surface.faces[g], cut.pieces[g], cut.made, tolerance.onEdge);
     }
     return result;
+}
+
+bool coveredPiece(const Scene& scene, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset) {
+    if (polygon.size() < 3) return false;
+    glm::dvec3 centre(0.0);
+    for (const glm::dvec3& v : polygon) centre += v;
+    centre /= static_cast<double>(polygon.size());
+    const glm::dvec3 from = centre + offset * normal;
+    // An orthonormal frame about the normal for the rings.
+    const glm::dvec3 helper = std::abs(normal.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
+    const glm::dvec3 u = glm::normalize(glm::cross(normal, helper)), w = glm::cross(normal, u);
+    std::vector<glm::dvec3> directions{normal};
+    for (const double elevation : {5.0, 20.0, 45.0, 70.0}) {
+        const double e = elevation * std::numbers::pi / 180;
+        for (int k = 0; k < 8; ++k) {
+            const double a = (k + 0.5 * (elevation == 20.0 || elevation == 70.0)) * std::numbers::pi / 4;
+            directions.push_back(std::cos(e) * (std::cos(a) * u + std::sin(a) * w) + std::sin(e) * normal);
+        }
+    }
+    bool sawBack = false;
+    for (const glm::dvec3& d : directions) {
+        double nearest = std::numeric_limits<double>::infinity();
+        bool front = false;
+        for (const Surface& surface : scene.surfaces)
+            for (const Face& face : surface.faces) {
+                if (!usable(face)) continue;
+                const double along = glm::dot(face.normal, d);
+                if (std::abs(along) < 1e-12) continue;
+                const double t = glm::dot(face.normal, face.vertices[0] - from) / along;
+                if (!(t > 0) || t > nearest * (1 + 1e-9)) continue;
+                const glm::dvec3 x = from + t * d;
+                bool inside = true;
+                const auto& v = face.vertices;
+                for (std::size_t i = 0; i < v.size() && inside; ++i)
+                    inside = glm::dot(face.normal, glm::cross(v[(i + 1) % v.size()] - v[i], x - v[i])) >= 0;
+                if (!inside) continue;
+                // A double-sided face's twin lies at the same distance: its front wins the tie.
+                const bool hereFront = along < 0;
+                if (t < nearest * (1 - 1e-9)) front = hereFront;
+                else front = front || hereFront;
+                nearest = std::min(nearest, t);
+            }
+        if (!std::isfinite(nearest)) continue;
+        if (front) return false;
+        sawBack = true;
+    }
+    return sawBack;
 }
 
 } // namespace radiant::detail

@@ -23,6 +23,7 @@
 // distance of a line count as on it, so a cut close to a corner or along an edge goes through it and
 // leaves no sliver.
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -40,6 +41,22 @@ using ContactPolygons = std::vector<std::vector<std::vector<std::vector<glm::dve
 /// A surface whose cut would take more than kMostContactPieces pieces is left uncut, with one line
 /// in `warnings` (when given) naming it.
 ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings = nullptr);
+
+/// True when a piece of a face (a convex polygon with its front normal) is covered: seen from a point
+/// `offset` m in front of its centre, no ray of a fixed set over the hemisphere (the normal and four
+/// rings of eight, 5 to 70 degrees above the plane) meets the front of a face first, and at least one
+/// meets the back of one. The floor under a block (the block's sides and top seen from behind) and a
+/// box's side sunk below the floor (the floor seen from below, the void beyond) are covered; the floor
+/// beside the block, which sees the block's front, is not, nor is a face with nothing in front of it.
+/// Covered patches see nothing the solvers can light and come out near their own exitance (0 on a
+/// floor): the radiosity drawn leaves them out of its vertex averages (RadiosityInterpolation.h).
+/// Brute force over the scene's faces, early out at the first front hit: the mesher asks it only of
+/// the pieces contacts cut (at most kMostContactPieces per surface).
+bool coveredPiece(const Scene& scene, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset);
+
+/// How far in front of a piece's centre coveredPiece() looks from, relative to the scene's diagonal:
+/// ten times kContactPlaneTolerance, so clear of a block standing a tolerance above the floor.
+inline constexpr double kCoveredOffset = 1e-4;
 
 /// Relative to the scene's diagonal: how far from a face's plane a contact edge may lie, and how
 /// close to a cut line a corner is taken as on it.

@@ -36,7 +36,7 @@ std::uint64_t segmentsFor(double length, double step) {
 
 } // namespace
 
-double weldTolerance(const Scene& scene) {
+double sceneDiagonal(const Scene& scene) {
     glm::dvec3 lo(std::numeric_limits<double>::max()), hi(std::numeric_limits<double>::lowest());
     for (const Surface& s : scene.surfaces)
         for (const Face& f : s.faces)
@@ -44,9 +44,10 @@ double weldTolerance(const Scene& scene) {
                 lo = glm::min(lo, v);
                 hi = glm::max(hi, v);
             }
-    const double extent = lo.x <= hi.x ? glm::length(hi - lo) : 1.0;
-    return std::max(extent * 1e-9, 1e-12);
+    return lo.x <= hi.x ? glm::length(hi - lo) : 1.0;
 }
+
+double weldTolerance(const Scene& scene) { return std::max(sceneDiagonal(scene) * 1e-9, 1e-12); }
 
 namespace {
 
@@ -137,7 +138,7 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         return it->second;
     };
 
-    const auto addPolygon = [&](std::size_t f, const std::vector<glm::dvec3>& polygon) {
+    const auto addPolygon = [&](std::size_t f, const std::vector<glm::dvec3>& polygon, bool contactCut) {
         std::vector<std::uint32_t> ids;
         for (const glm::dvec3& v : polygon) {
             const std::uint32_t id = welder.weld(v);
@@ -150,6 +151,7 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
             Piece piece;
             piece.face = static_cast<std::uint32_t>(f);
             piece.count = static_cast<std::uint8_t>(count);
+            piece.contactCut = contactCut;
             for (std::size_t j = 0; j < count; ++j) piece.corners[j] = j == 0 ? ids[0] : ids[first + j - 1];
             plan.pieces.push_back(piece);
         });
@@ -166,9 +168,9 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
         if (!(face.area > 0)) continue;  // degenerate: nothing to light
         // A face cut along contacts (ContactCuts.h) is meshed as its convex cut polygons.
         if (contactPolygons[f].empty()) {
-            addPolygon(f, face.vertices);
+            addPolygon(f, face.vertices, false);
         } else {
-            for (const auto& polygon : contactPolygons[f]) addPolygon(f, polygon);
+            for (const auto& polygon : contactPolygons[f]) addPolygon(f, polygon, true);
         }
     }
     plan.corners = welder.takePoints();

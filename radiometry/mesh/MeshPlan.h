@@ -30,6 +30,10 @@ struct Piece {
     /// A triangle of at most two patches' area (it asks for two segments on its longest edge at
     /// most): unequal edge counts then need no vertex inside it.
     bool fitsTwoPatches = true;
+    /// Cut from a face along contacts (ContactCuts.h): only such a piece can lie under what stands on
+    /// its face, so only these are asked whether they are covered.
+    bool contactCut = false;
+    bool covered = false;  ///< set by meshScene() (coveredPiece), not by planning
 };
 
 struct PlanEdge {
@@ -69,6 +73,9 @@ struct MeshPlan {
 /// Corners closer than this are one (m): a billionth of the scene's size, so float-rounded copies of
 /// a corner merge and distinct corners never do. The element tree drops repeated corners by it too.
 double weldTolerance(const Scene& scene);
+
+/// The diagonal of the box round every face corner, m (1 for a scene without corners).
+double sceneDiagonal(const Scene& scene);
 
 /// Builds the plan; throws RadiantError for a maximum patch area that is not positive and finite.
 MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options);

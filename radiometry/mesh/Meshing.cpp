@@ -13,6 +13,7 @@
 
 #include "radiometry/common/Error.h"
 #include "radiometry/common/NumberText.h"
+#include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/mesh/MeshPlan.h"
 #include "radiometry/mesh/PatchMesh.h"
 
@@ -79,6 +80,7 @@ private:
         patch.centroid = polygon.centroid;
         patch.normal = polygon.normal;
         patch.area = polygon.area;
+        patch.covered = piece.covered;
         mesh_.patches.push_back(patch);
     }
 
@@ -245,7 +247,7 @@ std::size_t estimatePatchCount(const Scene& scene, const MeshingOptions& options
 }
 
 PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress* progress) {
-    const detail::MeshPlan plan = detail::planMeshing(scene, options);
+    detail::MeshPlan plan = detail::planMeshing(scene, options);
     if (plan.patchCount > static_cast<double>(options.patchBudget)) {
         throw BudgetError({scene.name, "meshing"},
                           "meshing at " + threeDigits(options.maxPatchArea) + " m^2 would make " +
@@ -263,6 +265,18 @@ PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress*
         progress->done.store(0, std::memory_order_relaxed);
         progress->total.store(scene.faceCount(), std::memory_order_relaxed);
     }
+
+    // Which pieces cut along contacts lie under what stands on them (ContactCuts.h, coveredPiece);
+    // asked here, not while planning, so that estimatePatchCount() casts no rays.
+    const double offset = detail::kCoveredOffset * detail::sceneDiagonal(scene);
+    for (std::size_t s = 0; s < plan.surfaces.size(); ++s)
+        for (detail::Piece& piece : plan.surfaces[s].pieces) {
+            if (!piece.contactCut) continue;
+            std::array<glm::dvec3, 4> corners{};
+            for (std::size_t c = 0; c < piece.count; ++c) corners[c] = plan.surfaces[s].corners[piece.corners[c]];
+            piece.covered = detail::coveredPiece(scene, std::span<const glm::dvec3>(corners.data(), piece.count),
+                                                 scene.surfaces[s].faces[piece.face].normal, offset);
+        }
 
     PatchMesh mesh;
     mesh.patches.reserve(saturatingCount(plan.patchCount));

@@ -67,6 +67,10 @@ struct Patch {
     glm::dvec3 centroid{0.0};
     glm::dvec3 normal{0, 0, 1};
     double area = 0;  ///< m^2
+    /// Lies under something standing on its face (the floor under a block) or behind a face that cuts
+    /// it (a box's side below the floor): detail::coveredPiece. It sees only backs, so its radiosity is
+    /// near its own exitance; the radiosity drawn leaves it out of the vertex averages of open patches.
+    bool covered = false;
 };
 
 struct MeshingOptions {

@@ -15,18 +15,24 @@ std::vector<Rgb> vertexRadiosity(const PatchMesh& mesh, std::span<const Rgb> pat
         throw RadiantError({"", "radiosity interpolation"},
                            "the solution has " + std::to_string(patchRadiosity.size()) + " values for " +
                                std::to_string(mesh.patches.size()) + " patches");
-    std::vector<Rgb> sum(mesh.vertices.size(), Rgb(0.0));
-    std::vector<double> weight(mesh.vertices.size(), 0.0);
+    // [0] open patches, [1] covered ones: a vertex takes the covered mean only where no open patch meets.
+    std::array<std::vector<Rgb>, 2> sum{std::vector<Rgb>(mesh.vertices.size(), Rgb(0.0)),
+                                        std::vector<Rgb>(mesh.vertices.size(), Rgb(0.0))};
+    std::array<std::vector<double>, 2> weight{std::vector<double>(mesh.vertices.size(), 0.0),
+                                              std::vector<double>(mesh.vertices.size(), 0.0)};
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         for (std::size_t c = 0; c < patch.cornerCount; ++c) {
-            sum[patch.corners[c]] += patch.area * patchRadiosity[p];
-            weight[patch.corners[c]] += patch.area;
+            sum[patch.covered][patch.corners[c]] += patch.area * patchRadiosity[p];
+            weight[patch.covered][patch.corners[c]] += patch.area;
         }
     }
-    for (std::size_t v = 0; v < sum.size(); ++v)
-        if (weight[v] > 0) sum[v] /= weight[v];
-    return sum;
+    std::vector<Rgb> value(mesh.vertices.size(), Rgb(0.0));
+    for (std::size_t v = 0; v < value.size(); ++v) {
+        const int k = weight[0][v] > 0 ? 0 : 1;
+        if (weight[k][v] > 0) value[v] = sum[k][v] / weight[k][v];
+    }
+    return value;
 }
 
 std::array<double, 4> wachspressCoordinates(std::span<const glm::dvec3> corners, const glm::dvec3& normal,
@@ -82,8 +88,8 @@ Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadios
     // Coplanar within a relative angle and offset tolerance: the faces of one wall may be split.
     constexpr double kCosTolerance = 1e-9;
     const double offsetTolerance = 1e-9 + 1e-6 * std::sqrt(p.area);
-    std::array<Rgb, 4> sum{};
-    std::array<double, 4> weight{};
+    std::array<std::array<Rgb, 4>, 2> sum{};  // [0] open patches, [1] covered ones, as in vertexRadiosity
+    std::array<std::array<double, 4>, 2> weight{};
     for (std::uint32_t q = mesh.surfaceFirstPatch[p.surface]; q < mesh.surfaceFirstPatch[p.surface + 1]; ++q) {
         const Patch& other = mesh.patches[q];
         if (glm::dot(other.normal, p.normal) < 1.0 - kCosTolerance) continue;
@@ -91,15 +97,18 @@ Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadios
         for (std::size_t c = 0; c < p.cornerCount; ++c)
             for (std::size_t k = 0; k < other.cornerCount; ++k)
                 if (other.corners[k] == p.corners[c]) {
-                    sum[c] += other.area * patchRadiosity[q];
-                    weight[c] += other.area;
+                    sum[other.covered][c] += other.area * patchRadiosity[q];
+                    weight[other.covered][c] += other.area;
                 }
     }
     std::array<glm::dvec3, 4> corners{};
     for (std::size_t c = 0; c < p.cornerCount; ++c) corners[c] = mesh.vertices[p.corners[c]];
     const auto w = wachspressCoordinates(std::span(corners.data(), p.cornerCount), p.normal, point);
     Rgb value(0.0);
-    for (std::size_t c = 0; c < p.cornerCount; ++c) value += w[c] * (sum[c] / weight[c]);  // weight >= p.area > 0
+    for (std::size_t c = 0; c < p.cornerCount; ++c) {
+        const int k = weight[0][c] > 0 ? 0 : 1;  // weight[0] + weight[1] >= p.area > 0
+        value += w[c] * (sum[k][c] / weight[k][c]);
+    }
     return value;
 }
 

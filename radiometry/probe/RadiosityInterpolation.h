@@ -7,6 +7,10 @@
 // Lee & Desbrun, "Generalized Barycentric Coordinates on Irregular Polygons", JGT 2002): barycentric
 // on triangles, bilinear on parallelograms, smooth and positive inside any convex polygon.
 // Vertices are shared within a surface only, so values never bleed across a corner of the room.
+// Covered patches (Patch::covered: the floor under a block, a box's side sunk below the floor) see
+// only backs and sit near their own exitance; at a vertex on a block's foot they count only where no
+// open patch meets. Averaged in, they drew the floor of a closed furnace 0.5 cm from a box at 1.50
+// against E / (1 - rho) = 2 (docs/ARCHITECTURE.md, "Accuracy").
 #include <array>
 #include <span>
 #include <vector>
@@ -18,7 +22,8 @@
 
 namespace radiant {
 
-/// Per mesh vertex, the area-weighted mean radiosity (W/m^2, per band) of the patches using it.
+/// Per mesh vertex, the area-weighted mean radiosity (W/m^2, per band) of the open patches using it,
+/// or of the covered ones where no open patch does.
 /// Throws RadiantError when the solution's size differs from the mesh's patch count.
 std::vector<Rgb> vertexRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadiosity);
 
@@ -28,7 +33,8 @@ std::array<double, 4> wachspressCoordinates(std::span<const glm::dvec3> corners,
                                             const glm::dvec3& point);
 
 /// The interpolated radiosity at `point` on `patch`. Each corner takes the area-weighted mean of the
-/// patches of the same surface that share that corner AND the patch's plane, so a value never bleeds
+/// open patches of the same surface that share that corner AND the patch's plane (the covered ones
+/// where no open one does), so a value never bleeds
 /// around a crease (a block's top into its sides), as the display's smoothing does too.
 Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadiosity, std::size_t patch,
                          const glm::dvec3& point);

@@ -1,5 +1,6 @@
 #include "render/display/SmoothingGroups.h"
 
+#include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
 #include <glm/vec4.hpp>
@@ -19,10 +20,12 @@ SmoothingGroups findSmoothingGroups(const PatchMesh& mesh, double maxAngleDegree
     SmoothingGroups result;
     result.cornerVertex.assign(mesh.patches.size(), {});
     result.cornerCount.resize(mesh.patches.size());
+    result.covered.resize(mesh.patches.size());
     std::uint32_t next = 0;
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
         result.cornerCount[p] = patch.cornerCount;
+        result.covered[p] = patch.covered ? 1 : 0;
         for (std::uint8_t c = 0; c < patch.cornerCount; ++c) {
             std::vector<Group>& groups = groupsAt[patch.corners[c]];
             std::uint32_t id = next;
@@ -41,13 +44,19 @@ SmoothingGroups findSmoothingGroups(const PatchMesh& mesh, double maxAngleDegree
 
 void smoothRadiosity(const SmoothingGroups& groups, std::span<const double> patchAreaM2,
                      std::span<const Rgb> radiosityW_m2, std::vector<Rgb>& out) {
-    std::vector<glm::dvec4> sums(groups.vertexCount, glm::dvec4(0.0));
-    for (std::size_t p = 0; p < radiosityW_m2.size(); ++p)
+    // [0] open patches, [1] covered ones (groups made by hand in tests may leave `covered` empty).
+    std::array<std::vector<glm::dvec4>, 2> sums{std::vector<glm::dvec4>(groups.vertexCount, glm::dvec4(0.0)),
+                                                std::vector<glm::dvec4>(groups.vertexCount, glm::dvec4(0.0))};
+    for (std::size_t p = 0; p < radiosityW_m2.size(); ++p) {
+        const int k = p < groups.covered.size() && groups.covered[p] ? 1 : 0;
         for (std::uint8_t c = 0; c < groups.cornerCount[p]; ++c)
-            sums[groups.cornerVertex[p][c]] += glm::dvec4(radiosityW_m2[p] * patchAreaM2[p], patchAreaM2[p]);
-    out.resize(sums.size());
-    for (std::size_t v = 0; v < sums.size(); ++v)
-        out[v] = sums[v].w > 0 ? glm::dvec3(sums[v]) / sums[v].w : Rgb(0.0);
+            sums[k][groups.cornerVertex[p][c]] += glm::dvec4(radiosityW_m2[p] * patchAreaM2[p], patchAreaM2[p]);
+    }
+    out.resize(groups.vertexCount);
+    for (std::size_t v = 0; v < out.size(); ++v) {
+        const glm::dvec4& sum = sums[0][v].w > 0 ? sums[0][v] : sums[1][v];
+        out[v] = sum.w > 0 ? glm::dvec3(sum) / sum.w : Rgb(0.0);
+    }
 }
 
 } // namespace radiant::render

@@ -22,6 +22,9 @@ struct SmoothingGroups {
     /// Per patch: the smoothing vertex of each corner (corners beyond cornerCount unused).
     std::vector<std::array<std::uint32_t, 4>> cornerVertex;
     std::vector<std::uint8_t> cornerCount;
+    /// Per patch: 1 when covered (Patch::covered); it counts at a smoothing vertex only where no
+    /// open patch meets, as in vertexRadiosity (RadiosityInterpolation.h).
+    std::vector<std::uint8_t> covered;
     std::size_t vertexCount = 0;
 };
 
@@ -29,7 +32,8 @@ struct SmoothingGroups {
 /// first patch's normal is within `maxAngleDegrees` of its own patch's, else starts a group.
 SmoothingGroups findSmoothingGroups(const PatchMesh& mesh, double maxAngleDegrees = kSmoothingAngleDegrees);
 
-/// Per smoothing vertex: the area-weighted mean radiosity of the patches meeting there (W/m^2).
+/// Per smoothing vertex: the area-weighted mean radiosity of the open patches meeting there, or of
+/// the covered ones where no open one does (W/m^2).
 /// `patchAreaM2` and `radiosityW_m2` have one entry per patch; `out` is resized to vertexCount.
 void smoothRadiosity(const SmoothingGroups& groups, std::span<const double> patchAreaM2,
                      std::span<const Rgb> radiosityW_m2, std::vector<Rgb>& out);

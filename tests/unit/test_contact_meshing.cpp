@@ -11,6 +11,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <glm/geometric.hpp>
@@ -18,8 +19,11 @@
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/mesh/ElementTree.h"
+#include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/probe/RadiosityInterpolation.h"
 #include "radiometry/solver/Solver.h"
+#include "render/display/SmoothingGroups.h"
 #include "tests/support/MeshTopology.h"
 #include "tests/support/Relative.h"
 
@@ -242,6 +246,96 @@ TEST_CASE("closed furnace with a box standing on the floor or sunk into it: ever
     // Form factors sum to 1 per row to quadrature accuracy (test_comparison.cpp: the furnace within 1%).
     CHECK(worst < 0.01);
     CHECK(worstFloor < 0.01);
+    }
+}
+
+TEST_CASE("closed furnace with a box on the floor: the radiosity drawn beside the box's foot and up its sides is E / (1 - rho), the covered patches left out") {
+    // The scene of the test above. The floor under the box and a sunk box's sides below the floor see
+    // only backs (B = 0 and B = E = 1): averaged into the vertices of the foot they drew the floor
+    // 0.5 cm from the box at 1.50 against 2. Every value drawn or interpolated on an open patch must
+    // be the closed form B = E / (1 - rho) = 2, within the 1% the patches themselves are.
+    std::vector<Face> ceiling{makeFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})};
+    std::vector<Face> walls{makeFace({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}), makeFace({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}),
+                            makeFace({{1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {0, 1, 0}}), makeFace({{0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {0, 0, 0}})};
+    for (const double sunk : {0.0, 0.02}) {
+        CAPTURE(sunk);
+        const Scene scene = grey({{"floor", 0, floorFaces(false), "test"}, {"ceiling", 0, ceiling, "test"},
+                                  {"walls", 0, walls, "test"}, {"box", 0, boxFaces(sunk), "test"}},
+                                 1.0);
+        const PatchMesh mesh = meshScene(scene, {0.01});
+        // The geometry first: covered exactly under the box and below the floor.
+        for (std::size_t i = 0; i < mesh.size(); ++i) {
+            const Patch& patch = mesh.patches[i];
+            CAPTURE(i);
+            if (patch.surface == 0) CHECK(patch.covered == (insideFootprint(patch.centroid) > 0));
+            else if (patch.surface == 3) CHECK(patch.covered == (patch.centroid.z < 0));
+            else CHECK_FALSE(patch.covered);
+        }
+        SolverOptions options;
+        options.rays = std::make_shared<const RayCaster>(scene);
+        auto solver = makeSolver(SolverMethod::GaussSeidel, scene, mesh, options);
+        for (std::size_t k = 0; k < 500 && solver->lastStats().residual > 1e-7; ++k) solver->step();
+        REQUIRE(solver->lastStats().residual <= 1e-7);
+        const std::vector<Rgb>& b = solver->solution();
+
+        // Points 0.5, 1 and 2 cm out from each side on the floor and up each side, at a tenth, the
+        // middle and nine tenths of the side.
+        const auto f = footprint();
+        const PatchLocator locator(mesh);
+        const auto worstInterpolated = [&](const PatchMesh& m, double& lowest) {
+            double worst = 0;
+            lowest = 1e9;
+            for (std::size_t side = 0; side < 4; ++side) {
+                const glm::dvec3 along = f[(side + 1) % 4] - f[side];
+                const glm::dvec3 out = glm::normalize(glm::cross(along, glm::dvec3(0, 0, 1)));
+                for (const double t : {0.1, 0.5, 0.9})
+                    for (const double d : {0.005, 0.01, 0.02}) {
+                        const glm::dvec3 foot = f[side] + t * along;
+                        const glm::dvec3 onFloor = foot + d * out, onSide = foot + glm::dvec3(0, 0, d);
+                        for (const auto& [surface, face, point] :
+                             {std::tuple<std::uint32_t, std::uint32_t, glm::dvec3>{0, 0, onFloor},
+                              std::tuple<std::uint32_t, std::uint32_t, glm::dvec3>{3, static_cast<std::uint32_t>(side), onSide}}) {
+                            const std::size_t patch = locator.find(surface, face, point);
+                            REQUIRE(patch != PatchLocator::npos);
+                            const double drawn = interpolateRadiosity(m, b, patch, point).x;
+                            const double fromVertices = interpolateRadiosity(m, patch, point, vertexRadiosity(m, b)).x;
+                            lowest = std::min({lowest, drawn, fromVertices});
+                            worst = std::max({worst, std::abs(drawn / 2 - 1), std::abs(fromVertices / 2 - 1)});
+                        }
+                    }
+            }
+            return worst;
+        };
+        PatchMesh asBefore = mesh;  // every patch taken as open: the averages drawn before the fix
+        for (Patch& patch : asBefore.patches) patch.covered = false;
+        double lowestBefore = 0, lowest = 0;
+        const double before = worstInterpolated(asBefore, lowestBefore);
+        const double after = worstInterpolated(mesh, lowest);
+        MESSAGE("sunk " << sunk << " m: interpolated beside the foot, worst |B/2 - 1| " << before << " (lowest "
+                        << lowestBefore << ") with covered patches averaged in, " << after << " (lowest " << lowest
+                        << ") without");
+        CHECK(after < 0.01);
+
+        // Every vertex value an open patch is drawn with, by the probe's nodal averages and by the
+        // 3D view's smoothing groups.
+        const std::vector<Rgb> nodal = vertexRadiosity(mesh, b);
+        const render::SmoothingGroups groups = render::findSmoothingGroups(mesh);
+        std::vector<double> areas;
+        for (const Patch& patch : mesh.patches) areas.push_back(patch.area);
+        std::vector<Rgb> smooth;
+        render::smoothRadiosity(groups, areas, b, smooth);
+        double worstNodal = 0, worstSmooth = 0;
+        for (std::size_t i = 0; i < mesh.size(); ++i) {
+            if (mesh.patches[i].covered) continue;
+            for (std::size_t c = 0; c < mesh.patches[i].cornerCount; ++c) {
+                worstNodal = std::max(worstNodal, std::abs(nodal[mesh.patches[i].corners[c]].x / 2 - 1));
+                worstSmooth = std::max(worstSmooth, std::abs(smooth[groups.cornerVertex[i][c]].x / 2 - 1));
+            }
+        }
+        CAPTURE(worstNodal);
+        CAPTURE(worstSmooth);
+        CHECK(worstNodal < 0.01);
+        CHECK(worstSmooth < 0.01);
     }
 }
 
