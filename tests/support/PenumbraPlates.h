@@ -4,10 +4,13 @@
 // sees. Shared by the hierarchical and progressive penumbra tests.
 #include <algorithm>
 #include <initializer_list>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
+#include "radiometry/solver/HierarchicalFormFactor.h"
 #include "tests/support/CatalogViewFactors.h"
 
 namespace radiant::test {
@@ -50,6 +53,21 @@ inline double penumbraRadiosity(double rho, const glm::dvec3& x, double lampFrom
     const double seenFrom = std::max(lampFrom, 1 - x.x);
     if (seenFrom >= lampTo) return 0;
     return rho * overRectangle(pointToCornerRectangle, seenFrom - x.x, lampTo - x.x, lampFrom - x.y, lampTo - x.y, 1);
+}
+
+/// penumbraRadiosity averaged over each patch of the receiver (surface 1) by a 12 x 12 midpoint rule
+/// over the patch's parameters, indexed like the mesh's patches (0 on the lamp's).
+inline std::vector<double> penumbraPatchRadiosities(const PatchMesh& mesh, double rho, double lampFrom, double lampTo) {
+    std::vector<double> exact(mesh.size(), 0.0);
+    for (std::uint32_t i = mesh.surfaceFirstPatch[1]; i < mesh.surfaceFirstPatch[2]; ++i) {
+        const PatchPolygon polygon = mesh.polygon(i);
+        constexpr int kSide = 12;
+        for (int a = 0; a < kSide; ++a)
+            for (int b = 0; b < kSide; ++b)
+                exact[i] += penumbraRadiosity(rho, hierarchical::pointOn(polygon, (a + 0.5) / kSide, (b + 0.5) / kSide), lampFrom, lampTo);
+        exact[i] /= kSide * kSide;
+    }
+    return exact;
 }
 
 } // namespace radiant::test

@@ -212,19 +212,27 @@ TEST_CASE("a box's own top and a twin coplanar face cut nothing: a floor with no
     CHECK(mesh.surfaceFirstPatch[1] - mesh.surfaceFirstPatch[0] == 100);
 }
 
+namespace {
+/// A unit room facing in (grey, E = 1, rho = 0.5) with the box of boxFaces standing on its floor,
+/// or sunk `sunk` metres into it.
+Scene furnaceWithBox(double sunk) {
+    std::vector<Face> ceiling{makeFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})};
+    std::vector<Face> walls{makeFace({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}), makeFace({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}),
+                            makeFace({{1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {0, 1, 0}}), makeFace({{0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {0, 0, 0}})};
+    return grey({{"floor", 0, floorFaces(false), "test"}, {"ceiling", 0, ceiling, "test"}, {"walls", 0, walls, "test"},
+                 {"box", 0, boxFaces(sunk), "test"}},
+                1.0);
+}
+} // namespace
+
 TEST_CASE("closed furnace with a box standing on the floor or sunk into it: every open patch at E / (1 - rho), the floor along the box too") {
     // A unit room facing in, the box inside facing out; E = 1, rho = 0.5 everywhere, so the closed
     // form is B = 2 on every patch that sees only the enclosure (the floor under the box sees the
     // box's backs and is left out). Sunk 2 cm, the box cuts the floor and the floor cuts its sides
     // where they cross: uncut, the floor beside it was 10% and the sides 13% low.
-    std::vector<Face> ceiling{makeFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})};
-    std::vector<Face> walls{makeFace({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}), makeFace({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}),
-                            makeFace({{1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {0, 1, 0}}), makeFace({{0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {0, 0, 0}})};
     for (const double sunk : {0.0, 0.02}) {
     CAPTURE(sunk);
-    const Scene scene = grey({{"floor", 0, floorFaces(false), "test"}, {"ceiling", 0, ceiling, "test"},
-                              {"walls", 0, walls, "test"}, {"box", 0, boxFaces(sunk), "test"}},
-                             1.0);
+    const Scene scene = furnaceWithBox(sunk);
     const PatchMesh mesh = meshScene(scene, {0.01});
     SolverOptions options;
     options.rays = std::make_shared<const RayCaster>(scene);
@@ -254,14 +262,9 @@ TEST_CASE("closed furnace with a box on the floor: the radiosity drawn beside th
     // only backs (B = 0 and B = E = 1): averaged into the vertices of the foot they drew the floor
     // 0.5 cm from the box at 1.50 against 2. Every value drawn or interpolated on an open patch must
     // be the closed form B = E / (1 - rho) = 2, within the 1% the patches themselves are.
-    std::vector<Face> ceiling{makeFace({{0, 0, 1}, {0, 1, 1}, {1, 1, 1}, {1, 0, 1}})};
-    std::vector<Face> walls{makeFace({{0, 0, 0}, {0, 0, 1}, {1, 0, 1}, {1, 0, 0}}), makeFace({{1, 0, 0}, {1, 0, 1}, {1, 1, 1}, {1, 1, 0}}),
-                            makeFace({{1, 1, 0}, {1, 1, 1}, {0, 1, 1}, {0, 1, 0}}), makeFace({{0, 1, 0}, {0, 1, 1}, {0, 0, 1}, {0, 0, 0}})};
     for (const double sunk : {0.0, 0.02}) {
         CAPTURE(sunk);
-        const Scene scene = grey({{"floor", 0, floorFaces(false), "test"}, {"ceiling", 0, ceiling, "test"},
-                                  {"walls", 0, walls, "test"}, {"box", 0, boxFaces(sunk), "test"}},
-                                 1.0);
+        const Scene scene = furnaceWithBox(sunk);
         const PatchMesh mesh = meshScene(scene, {0.01});
         // The geometry first: covered exactly under the box and below the floor.
         for (std::size_t i = 0; i < mesh.size(); ++i) {

@@ -367,18 +367,8 @@ TEST_CASE("the light's shot leaves a penumbra unbiased: a small lamp's half-bloc
     constexpr double rho = 0.5, from = 0.4, to = 0.6;
     const Scene scene = test::platesWithBlocker(true, false, 1, rho, from, to);
     const PatchMesh mesh = meshForProgressive(scene, 0.0025);
-    double brightest = 0;
-    std::vector<double> exact(mesh.size(), 0.0);
-    for (std::uint32_t i = mesh.surfaceFirstPatch[1]; i < mesh.surfaceFirstPatch[2]; ++i) {
-        const PatchPolygon polygon = mesh.polygon(i);
-        constexpr int kSide = 12;
-        for (int a = 0; a < kSide; ++a)
-            for (int b = 0; b < kSide; ++b)
-                exact[i] += test::penumbraRadiosity(rho, hierarchical::pointOn(polygon, (a + 0.5) / kSide, (b + 0.5) / kSide),
-                                                    from, to);
-        exact[i] /= kSide * kSide;
-        brightest = std::max(brightest, exact[i]);
-    }
+    const std::vector<double> exact = test::penumbraPatchRadiosities(mesh, rho, from, to);
+    const double brightest = *std::max_element(exact.begin(), exact.end());
     double signedSum = 0, area = 0, signedDim = 0, areaDim = 0;
     for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
         SolverOptions options;
