@@ -311,6 +311,11 @@ void HierarchicalSolver::buildPatchRows() {
             std::vector<GatherTerm>& row = rows[p];
             for (const ElementIndex term : cast) termVisibility[term] = -1.0;
             cast.clear();
+            // A covered patch (the floor under a block) sees only backs: no light reaches it, and its
+            // row held nothing. Yet its irradiance, near zero, made every source "bright" to it, so
+            // each of its terms cast the lamp's 32-88 rays: the Cornell box's 146 covered floor
+            // patches cast 1.4M of the rows' 3.6M rays, to find what Patch::covered already says.
+            if (patch.covered) continue;
             patchPolygon = &patch.polygon;
             patchSeed = hierarchical::mix(options_.seed ^ 0x9a7c4ull ^ p);
             // The patch's mean irradiance by a Gauss rule: 3 x 3 where the leaves are finer than the

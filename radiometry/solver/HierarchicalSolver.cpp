@@ -69,7 +69,7 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
         const Patch& patch = mesh.patches[i];
         // A mesh made by hand may give a patch no corners: it then shows the element under its centroid.
         patches_.push_back({patch.surface, patch.face, patch.centroid, patch.area,
-                            patch.cornerCount >= 3 ? mesh.polygon(i) : PatchPolygon{}});
+                            patch.cornerCount >= 3 ? mesh.polygon(i) : PatchPolygon{}, patch.covered});
     }
     for (const PatchSample& patch : patches_)
         if (patch.surface >= scene.surfaces.size() || patch.face >= scene.surfaces[patch.surface].faces.size())

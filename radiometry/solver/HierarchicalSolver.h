@@ -248,6 +248,7 @@ private:
         glm::dvec3 centroid;
         double area;
         PatchPolygon polygon;
+        bool covered = false;  ///< Patch::covered: under a block, seeing only backs
     };
     std::vector<PatchSample> patches_;
     std::vector<ElementIndex> patchElement_;
