@@ -248,6 +248,9 @@ TEST_CASE("closed furnace with a box standing on the floor or sunk into it: ever
     double worstFloor = 0, worst = 0;
     for (std::size_t i = 0; i < mesh.size(); ++i) {
         const Patch& patch = mesh.patches[i];
+        // Nothing reaches a covered patch: B = E exactly (rays grazing the footprint's line leaked
+        // light into such patches before they were left out of the form factors).
+        if (patch.covered) CHECK(b[i].x == doctest::Approx(1.0).epsilon(1e-12).scale(0));
         if (patch.surface == 0 && insideFootprint(patch.centroid) > 0) continue;
         // A sunk box's sides below the floor face the void under it, out of the room: B = E there.
         if (patch.centroid.z < 0) continue;
