@@ -72,6 +72,16 @@ constexpr double kNearInDiameters = 1.5;
 /// 0.85 -> 1.07 s (tests/unit/test_progressive_gap.cpp).
 constexpr int kPenumbraRayFactor = 4;
 constexpr double kFullPenumbraShare = 0.02;
+/// A shot carrying at least kLightShotShare of the emitted power (a light source's) spreads
+/// kLightShotTargetFactor times visibilityRays targets (256) over its shooter, and its receivers cast
+/// as many penumbra rays. Every receiver of a shot sees the light through the same targets, so a
+/// penumbra is read against that many points of the lamp for the whole solve (the light shoots
+/// once): with 64, a floor patch in the short block's penumbra read 25 / 9 / 18% under Gauss-Seidel
+/// at seeds 1-3, with 256 2 / 12 / 9%. Cornell box, seeds 1-3 against Gauss-Seidel with 64 rays: the patches'
+/// mean distance 0.91 / 0.91 / 1.00% -> 0.86 / 0.77 / 0.77%, patches over 5% off 84 / 84 / 106 ->
+/// 71 / 52 / 59, CPU +1-6% (docs/ARCHITECTURE.md, "Accuracy").
+constexpr double kLightShotShare = 0.2;
+constexpr int kLightShotTargetFactor = 16;
 
 /// A member weighs the receiver's kernel by its centroid's point kernel (in the ratio of
 /// unoccludedFromShot) once the receiver's centroid is this many of the member's areas away,
@@ -158,11 +168,11 @@ struct ShotTargets {
     std::vector<glm::dvec3> normal;
 };
 
-/// visibilityRays x kPenumbraRayFactor points of the group, stratified over its members' share of the shot's power
+/// visibilityRays x kPenumbraRayFactor points (kLightShotTargetFactor for a light's shot) of the group, stratified over its members' share of the shot's power
 /// (by area when no share is given): stratum t falls in the member whose cumulative share covers
 /// it, at a u within that member proportional to where in its share it fell and a v from a
 /// permuted stratum, so a lone patch gets a jittered Latin hypercube.
-ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const double> memberPower) {
+ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const double> memberPower, double powerShare) {
     const auto members = g.groups.group(group);
     std::vector<double> cumulative(members.size());
     double total = 0;
@@ -172,7 +182,8 @@ ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const doub
         total += byPower ? std::max(0.0, memberPower[k]) : g.polygons[members[k]].area;
         cumulative[k] = total;
     }
-    const int n = std::max(1, g.options.visibilityRays * kPenumbraRayFactor);
+    const int factor = std::abs(powerShare) >= kLightShotShare ? kLightShotTargetFactor : kPenumbraRayFactor;
+    const int n = std::max(1, g.options.visibilityRays * factor);
     const auto count = static_cast<std::uint64_t>(n);
     std::uint64_t state = pairSeed(g.options.seed, group, g.timesShot[group]++);
     std::uint64_t stride = 1 + mix64(state) % count;
@@ -462,7 +473,7 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
     return [geometry](std::size_t shooter, std::span<const double> memberPower, double powerShare,
                       std::span<double> toShooter) {
-        const ShotTargets targets = shotTargets(*geometry, shooter, memberPower);
+        const ShotTargets targets = shotTargets(*geometry, shooter, memberPower, powerShare);
         const std::vector<double> share = memberShares(*geometry, shooter, memberPower);
         const int penumbraRays = penumbraRaysFor(targets, powerShare);
         parallelFor(toShooter.size(), 256, [&](std::size_t begin, std::size_t end) {
@@ -518,7 +529,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
                 for (const std::uint32_t p : groups->patchesOf(members[k]))
                     patchPower.push_back(groupShare * g.patches[p].area / groups->area[members[k]]);
             }
-            const ShotTargets targets = shotTargets(*geometry, shooter, patchPower);
+            const ShotTargets targets = shotTargets(*geometry, shooter, patchPower, powerShare);
             const std::vector<double> share = memberShares(g, shooter, patchPower);
             const int penumbraRays = penumbraRaysFor(targets, powerShare);
             parallelFor(f.size(), 256, [&](std::size_t begin, std::size_t end) {
@@ -527,7 +538,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
         } else {
             // One group that is not planar: its radiosity is uniform, so its light leaves its
             // members by area.
-            ShotTargets targets = shotTargets(*geometry, shooter, {});
+            ShotTargets targets = shotTargets(*geometry, shooter, {}, powerShare);
             targets.normal.reserve(targets.member.size());
             const auto members = g.groups.group(shooter);
             for (const std::uint32_t k : targets.member) targets.normal.push_back(g.polygons[members[k]].normal);

@@ -363,13 +363,13 @@ TEST_CASE("the light's shot leaves a penumbra unbiased: a small lamp's half-bloc
     // seed). Here a 0.2 m lamp 1 m below the receiver and a half-plane blocker half-way cast a
     // penumbra four patches wide, B = rho F(dx -> the lamp's part the point sees) averaged over
     // each patch; the penumbra patches' area-weighted mean signed error over seeds 1-4 (before the
-    // fix -2.0%, and -4.2% on the patches that see under half the lamp).
+    // fix -2.0%, and -4.2% on the patches that see under half the lamp) and mean absolute error.
     constexpr double rho = 0.5, from = 0.4, to = 0.6;
     const Scene scene = test::platesWithBlocker(true, false, 1, rho, from, to);
     const PatchMesh mesh = meshForProgressive(scene, 0.0025);
     const std::vector<double> exact = test::penumbraPatchRadiosities(mesh, rho, from, to);
     const double brightest = *std::max_element(exact.begin(), exact.end());
-    double signedSum = 0, area = 0, signedDim = 0, areaDim = 0;
+    double signedSum = 0, area = 0, signedDim = 0, areaDim = 0, absoluteSum = 0;
     for (const std::uint64_t seed : {1u, 2u, 3u, 4u}) {
         SolverOptions options;
         options.seed = seed;
@@ -381,6 +381,7 @@ TEST_CASE("the light's shot leaves a penumbra unbiased: a small lamp's half-bloc
             if (c.x < from || c.x > to || c.y < from || c.y > to || exact[i] < 0.01 * brightest) continue;
             const double off = solver->solution()[i].x / exact[i] - 1;
             signedSum += mesh.patches[i].area * off;
+            absoluteSum += mesh.patches[i].area * std::abs(off);
             area += mesh.patches[i].area;
             if (exact[i] < 0.5 * brightest) {  // seeing under half the lamp: where slivers are thin
                 signedDim += mesh.patches[i].area * off;
@@ -388,10 +389,15 @@ TEST_CASE("the light's shot leaves a penumbra unbiased: a small lamp's half-bloc
             }
         }
     }
-    MESSAGE("penumbra patches: mean signed error ", signedSum / area, ", under half the lamp ", signedDim / areaDim);
+    MESSAGE("penumbra patches: mean signed error ", signedSum / area, ", under half the lamp ", signedDim / areaDim,
+            ", mean absolute error ", absoluteSum / area);
     REQUIRE(areaDim > 0);
     CHECK(std::abs(signedSum / area) < 0.01);
     CHECK(std::abs(signedDim / areaDim) < 0.02);
+    // Each patch, not only their mean: every receiver of the lamp's shot sees it through the same
+    // targets, so 64 of them left each penumbra patch 5.3% off on average (seeds 1-4; 5.4% at seeds
+    // 5-12), 256 1.8% (1.7%).
+    CHECK(absoluteSum / area < 0.03);
 }
 
 } // TEST_SUITE
