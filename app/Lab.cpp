@@ -93,6 +93,21 @@ struct Lab::State {
             if (!shortcut || (action == GLFW_REPEAT && !shortcut->repeats)) return;
             self->onAction(shortcut->action);
         });
+        // The pointer and the buttons in event order, so a click is taken where it happened, not
+        // where a slow frame finds the pointer (ButtonEvents.h). ImGui's backend chains to the
+        // button callback and installs no cursor-position callback of its own.
+        glfwSetCursorPosCallback(window.handle(), [](GLFWwindow* w, double x, double y) {
+            static_cast<State*>(glfwGetWindowUserPointer(w))->buttons.moved({x, y});
+        });
+        glfwSetMouseButtonCallback(window.handle(), [](GLFWwindow* w, int button, int action, int) {
+            auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
+            if (!self->buttons.knowsPointer()) {  // pressed before any motion reached the window
+                double x = 0, y = 0;
+                glfwGetCursorPos(w, &x, &y);
+                self->buttons.moved({x, y});
+            }
+            self->buttons.button(button, action == GLFW_PRESS);
+        });
         glfwSetDropCallback(window.handle(), [](GLFWwindow* w, int count, const char** paths) {
             auto* self = static_cast<State*>(glfwGetWindowUserPointer(w));
             if (count > 0 && self->scenePanel) self->scenePanel->open(paths[0]);  // one scene at a time
@@ -338,7 +353,7 @@ struct Lab::State {
         // Folding the demos' header away (sidebar shown) closes the demo, as closing its section does.
         if (panelsVisible && demoView.active() && !demosPanel->drawn()) demosPanel->closeDemo();
         const LectureDemo* demo = demoView.active();
-        controller.update(orbit, viewInUiUnits);
+        controller.update(orbit, viewInUiUnits, buttons.take());
         lastCamera = orbit.camera();
         if (!demo) sendViewWhenStill(now);  // a demo's camera is not the scene's: importance keeps the scene's
         if (const std::optional<glm::dvec2> click = controller.click(); click && !demo)
@@ -443,6 +458,7 @@ struct Lab::State {
     FrameStats frames;
     Sidebar sidebar;
     CameraController controller;
+    ButtonRecorder buttons;  ///< fed by the window's callbacks, taken by `controller` once a frame
     std::optional<double> lastFrameTime;
     render::Viewport viewport;
     render::Camera lastCamera;
@@ -502,6 +518,10 @@ void Lab::pressKey(int glfwKey, bool control) {
     if (const std::optional<Shortcut> shortcut = shortcutForKey(glfwKey, control)) state_->onAction(shortcut->action);
 }
 bool Lab::clickAt(const glm::dvec2& framebufferPixel) { return state_->pickAt(framebufferPixel); }
+std::optional<glm::dvec3> Lab::probePoint() const {
+    const std::optional<ProbePick>& pick = state_->probePanel->picked();
+    return pick ? std::optional(pick->point) : std::nullopt;
+}
 std::optional<ProbeReading> Lab::probeReading() const { return state_->probePanel->reading(); }
 std::uint64_t Lab::probeGeneration() const { return state_->probePanel->readingGeneration(); }
 std::string Lab::editMaterial(std::size_t surface, const Rgb& reflectance, const Rgb& exitanceW_m2) {

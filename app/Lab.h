@@ -79,6 +79,8 @@ public:
     /// A left click at a framebuffer pixel (top-left origin), as a mouse click in the 3D view: picks
     /// the probe point. False when the ray hits nothing.
     bool clickAt(const glm::dvec2& framebufferPixel);
+    /// The probe's picked point (m) from the moment a click is taken; its reading follows later.
+    [[nodiscard]] std::optional<glm::dvec3> probePoint() const;
     /// The probe's newest reading and the snapshot generation it was measured on (0: none yet).
     [[nodiscard]] std::optional<ProbeReading> probeReading() const;
     [[nodiscard]] std::uint64_t probeGeneration() const;

@@ -420,7 +420,7 @@ void SolverThread::apply(State& state, SolverCommand& command) {
                 progress_.cancelRequested.store(false);
                 std::shared_ptr<const PatchMesh> mesh;
                 try {
-                    mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_));
+                    mesh = std::make_shared<const PatchMesh>(meshScene(*scene, c.meshing, &progress_, rays.get()));
                 } catch (const Cancelled&) {
                     // Keep the newest scene, without a mesh (a consistent snapshot), and make sure it
                     // is meshed: by the newer Remesh or LoadScene in the queue, or else by this again.

@@ -5,11 +5,14 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <unordered_map>
 #include <utility>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
+
+#include "radiometry/geometry/RayCaster.h"
 
 namespace radiant::detail {
 namespace {
@@ -421,7 +424,7 @@ ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* w
     return result;
 }
 
-bool coveredPiece(const Scene& scene, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset) {
+bool coveredPiece(const RayCaster& rays, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset) {
     if (polygon.size() < 3) return false;
     glm::dvec3 centre(0.0);
     for (const glm::dvec3& v : polygon) centre += v;
@@ -440,29 +443,11 @@ bool coveredPiece(const Scene& scene, std::span<const glm::dvec3> polygon, const
     }
     bool sawBack = false;
     for (const glm::dvec3& d : directions) {
-        double nearest = std::numeric_limits<double>::infinity();
-        bool front = false;
-        for (const Surface& surface : scene.surfaces)
-            for (const Face& face : surface.faces) {
-                if (!usable(face)) continue;
-                const double along = glm::dot(face.normal, d);
-                if (std::abs(along) < 1e-12) continue;
-                const double t = glm::dot(face.normal, face.vertices[0] - from) / along;
-                if (!(t > 0) || t > nearest * (1 + 1e-9)) continue;
-                const glm::dvec3 x = from + t * d;
-                bool inside = true;
-                const auto& v = face.vertices;
-                for (std::size_t i = 0; i < v.size() && inside; ++i)
-                    inside = glm::dot(face.normal, glm::cross(v[(i + 1) % v.size()] - v[i], x - v[i])) >= 0;
-                if (!inside) continue;
-                // A double-sided face's twin lies at the same distance: its front wins the tie.
-                const bool hereFront = along < 0;
-                if (t < nearest * (1 - 1e-9)) front = hereFront;
-                else front = front || hereFront;
-                nearest = std::min(nearest, t);
-            }
-        if (!std::isfinite(nearest)) continue;
-        if (front) return false;
+        // A double-sided face's twin lies at the same distance: the caster hands a ray arriving at
+        // its back to the twin facing it, so the front wins the tie.
+        const std::optional<RayHit> hit = rays.intersect(from, d);
+        if (!hit) continue;
+        if (glm::dot(hit->normal, d) < 0) return false;
         sawBack = true;
     }
     return sawBack;

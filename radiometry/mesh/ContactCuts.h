@@ -31,6 +31,10 @@
 
 #include "radiometry/scene/Scene.h"
 
+namespace radiant {
+class RayCaster;
+}
+
 namespace radiant::detail {
 
 /// For every face of every surface, the strictly convex polygons it is cut into ([surface][face]);
@@ -49,10 +53,10 @@ ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* w
 /// box's side sunk below the floor (the floor seen from below, the void beyond) are covered; the floor
 /// beside the block, which sees the block's front, is not, nor is a face with nothing in front of it.
 /// Covered patches see nothing the solvers can light and come out near their own exitance (0 on a
-/// floor): the radiosity drawn leaves them out of its vertex averages (RadiosityInterpolation.h).
-/// Brute force over the scene's faces, early out at the first front hit: the mesher asks it only of
-/// the pieces contacts cut (at most kMostContactPieces per surface).
-bool coveredPiece(const Scene& scene, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset);
+/// floor): the radiosity drawn leaves them out of its vertex averages (OpenFirstMean.h).
+/// Traced through `rays`, a RayCaster of the scene whose piece this is (its BVH: brute force over
+/// every face cost the mesher 33 rays x faces per piece).
+bool coveredPiece(const RayCaster& rays, std::span<const glm::dvec3> polygon, const glm::dvec3& normal, double offset);
 
 /// How far in front of a piece's centre coveredPiece() looks from, relative to the scene's diagonal:
 /// ten times kContactPlaneTolerance, so clear of a block standing a tolerance above the floor.

@@ -7,12 +7,14 @@
 #include <array>
 #include <cstdio>
 #include <limits>
+#include <optional>
 #include <string>
 
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
 #include "radiometry/common/NumberText.h"
+#include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/mesh/MeshPlan.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -246,7 +248,7 @@ std::size_t estimatePatchCount(const Scene& scene, const MeshingOptions& options
     return saturatingCount(detail::planMeshing(scene, options).patchCount);
 }
 
-PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress* progress) {
+PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress* progress, const RayCaster* rays) {
     detail::MeshPlan plan = detail::planMeshing(scene, options);
     if (plan.patchCount > static_cast<double>(options.patchBudget)) {
         throw BudgetError({scene.name, "meshing"},
@@ -267,14 +269,17 @@ PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress*
     }
 
     // Which pieces cut along contacts lie under what stands on them (ContactCuts.h, coveredPiece);
-    // asked here, not while planning, so that estimatePatchCount() casts no rays.
+    // asked here, not while planning, so that estimatePatchCount() casts no rays. A caller without
+    // a caster has one built only for a scene with such pieces.
     const double offset = detail::kCoveredOffset * detail::sceneDiagonal(scene);
+    std::optional<RayCaster> ownRays;
     for (std::size_t s = 0; s < plan.surfaces.size(); ++s)
         for (detail::Piece& piece : plan.surfaces[s].pieces) {
             if (!piece.contactCut) continue;
+            if (!rays) rays = &ownRays.emplace(scene);
             std::array<glm::dvec3, 4> corners{};
             for (std::size_t c = 0; c < piece.count; ++c) corners[c] = plan.surfaces[s].corners[piece.corners[c]];
-            piece.covered = detail::coveredPiece(scene, std::span<const glm::dvec3>(corners.data(), piece.count),
+            piece.covered = detail::coveredPiece(*rays, std::span<const glm::dvec3>(corners.data(), piece.count),
                                                  scene.surfaces[s].faces[piece.face].normal, offset);
         }
 

@@ -17,6 +17,8 @@
 
 namespace radiant {
 
+class RayCaster;
+
 /// A planar convex triangle or quad with its derived geometry, in metres. Patches and the
 /// hierarchical solver's elements both use it.
 struct PatchPolygon {
@@ -93,7 +95,11 @@ struct PatchMesh {
 /// Cuts every face of the scene into patches no larger than options.maxPatchArea: quads where the
 /// face is a quad, triangles otherwise. Throws BudgetError before allocating when the estimated
 /// patch count exceeds options.patchBudget. Reports progress and honours cancellation when given.
-PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress* progress = nullptr);
+/// `rays`, a RayCaster of this scene when the caller holds one (the lab's solver thread shares one per
+/// scene), traces the covered test of the pieces cut along contacts (detail::coveredPiece); without
+/// it one is built, only for a scene that has such pieces.
+PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress* progress = nullptr,
+                    const RayCaster* rays = nullptr);
 
 /// Estimated patch count of meshScene(scene, options), cheap, for budgets and UI hints.
 std::size_t estimatePatchCount(const Scene& scene, const MeshingOptions& options);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
+#include "radiometry/probe/OpenFirstMean.h"
 
 namespace radiant {
 
@@ -15,23 +16,14 @@ std::vector<Rgb> vertexRadiosity(const PatchMesh& mesh, std::span<const Rgb> pat
         throw RadiantError({"", "radiosity interpolation"},
                            "the solution has " + std::to_string(patchRadiosity.size()) + " values for " +
                                std::to_string(mesh.patches.size()) + " patches");
-    // [0] open patches, [1] covered ones: a vertex takes the covered mean only where no open patch meets.
-    std::array<std::vector<Rgb>, 2> sum{std::vector<Rgb>(mesh.vertices.size(), Rgb(0.0)),
-                                        std::vector<Rgb>(mesh.vertices.size(), Rgb(0.0))};
-    std::array<std::vector<double>, 2> weight{std::vector<double>(mesh.vertices.size(), 0.0),
-                                              std::vector<double>(mesh.vertices.size(), 0.0)};
+    std::vector<OpenFirstMean> mean(mesh.vertices.size());
     for (std::size_t p = 0; p < mesh.patches.size(); ++p) {
         const Patch& patch = mesh.patches[p];
-        for (std::size_t c = 0; c < patch.cornerCount; ++c) {
-            sum[patch.covered][patch.corners[c]] += patch.area * patchRadiosity[p];
-            weight[patch.covered][patch.corners[c]] += patch.area;
-        }
+        for (std::size_t c = 0; c < patch.cornerCount; ++c)
+            mean[patch.corners[c]].add(patchRadiosity[p], patch.area, patch.covered);
     }
-    std::vector<Rgb> value(mesh.vertices.size(), Rgb(0.0));
-    for (std::size_t v = 0; v < value.size(); ++v) {
-        const int k = weight[0][v] > 0 ? 0 : 1;
-        if (weight[k][v] > 0) value[v] = sum[k][v] / weight[k][v];
-    }
+    std::vector<Rgb> value(mesh.vertices.size());
+    for (std::size_t v = 0; v < value.size(); ++v) value[v] = mean[v].mean();
     return value;
 }
 
@@ -88,27 +80,20 @@ Rgb interpolateRadiosity(const PatchMesh& mesh, std::span<const Rgb> patchRadios
     // Coplanar within a relative angle and offset tolerance: the faces of one wall may be split.
     constexpr double kCosTolerance = 1e-9;
     const double offsetTolerance = 1e-9 + 1e-6 * std::sqrt(p.area);
-    std::array<std::array<Rgb, 4>, 2> sum{};  // [0] open patches, [1] covered ones, as in vertexRadiosity
-    std::array<std::array<double, 4>, 2> weight{};
+    std::array<OpenFirstMean, 4> mean{};
     for (std::uint32_t q = mesh.surfaceFirstPatch[p.surface]; q < mesh.surfaceFirstPatch[p.surface + 1]; ++q) {
         const Patch& other = mesh.patches[q];
         if (glm::dot(other.normal, p.normal) < 1.0 - kCosTolerance) continue;
         if (std::abs(glm::dot(p.normal, other.centroid - p.centroid)) > offsetTolerance) continue;
         for (std::size_t c = 0; c < p.cornerCount; ++c)
             for (std::size_t k = 0; k < other.cornerCount; ++k)
-                if (other.corners[k] == p.corners[c]) {
-                    sum[other.covered][c] += other.area * patchRadiosity[q];
-                    weight[other.covered][c] += other.area;
-                }
+                if (other.corners[k] == p.corners[c]) mean[c].add(patchRadiosity[q], other.area, other.covered);
     }
     std::array<glm::dvec3, 4> corners{};
     for (std::size_t c = 0; c < p.cornerCount; ++c) corners[c] = mesh.vertices[p.corners[c]];
     const auto w = wachspressCoordinates(std::span(corners.data(), p.cornerCount), p.normal, point);
     Rgb value(0.0);
-    for (std::size_t c = 0; c < p.cornerCount; ++c) {
-        const int k = weight[0][c] > 0 ? 0 : 1;  // weight[0] + weight[1] >= p.area > 0
-        value += w[c] * (sum[k][c] / weight[k][c]);
-    }
+    for (std::size_t c = 0; c < p.cornerCount; ++c) value += w[c] * mean[c].mean();
     return value;
 }
 

@@ -7,10 +7,7 @@
 // Lee & Desbrun, "Generalized Barycentric Coordinates on Irregular Polygons", JGT 2002): barycentric
 // on triangles, bilinear on parallelograms, smooth and positive inside any convex polygon.
 // Vertices are shared within a surface only, so values never bleed across a corner of the room.
-// Covered patches (Patch::covered: the floor under a block, a box's side sunk below the floor) see
-// only backs and sit near their own exitance; at a vertex on a block's foot they count only where no
-// open patch meets. Averaged in, they drew the floor of a closed furnace 0.5 cm from a box at 1.50
-// against E / (1 - rho) = 2 (docs/ARCHITECTURE.md, "Accuracy").
+// Covered patches (Patch::covered) count at a vertex only where no open patch meets: OpenFirstMean.h.
 #include <array>
 #include <span>
 #include <vector>

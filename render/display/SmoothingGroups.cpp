@@ -3,8 +3,9 @@
 #include <array>
 #include <cmath>
 #include <glm/geometric.hpp>
-#include <glm/vec4.hpp>
 #include <numbers>
+
+#include "radiometry/probe/OpenFirstMean.h"
 
 namespace radiant::render {
 
@@ -44,19 +45,15 @@ SmoothingGroups findSmoothingGroups(const PatchMesh& mesh, double maxAngleDegree
 
 void smoothRadiosity(const SmoothingGroups& groups, std::span<const double> patchAreaM2,
                      std::span<const Rgb> radiosityW_m2, std::vector<Rgb>& out) {
-    // [0] open patches, [1] covered ones (groups made by hand in tests may leave `covered` empty).
-    std::array<std::vector<glm::dvec4>, 2> sums{std::vector<glm::dvec4>(groups.vertexCount, glm::dvec4(0.0)),
-                                                std::vector<glm::dvec4>(groups.vertexCount, glm::dvec4(0.0))};
+    // Groups made by hand in tests may leave `covered` empty: every patch open.
+    std::vector<OpenFirstMean> mean(groups.vertexCount);
     for (std::size_t p = 0; p < radiosityW_m2.size(); ++p) {
-        const int k = p < groups.covered.size() && groups.covered[p] ? 1 : 0;
+        const bool covered = p < groups.covered.size() && groups.covered[p];
         for (std::uint8_t c = 0; c < groups.cornerCount[p]; ++c)
-            sums[k][groups.cornerVertex[p][c]] += glm::dvec4(radiosityW_m2[p] * patchAreaM2[p], patchAreaM2[p]);
+            mean[groups.cornerVertex[p][c]].add(radiosityW_m2[p], patchAreaM2[p], covered);
     }
     out.resize(groups.vertexCount);
-    for (std::size_t v = 0; v < out.size(); ++v) {
-        const glm::dvec4& sum = sums[0][v].w > 0 ? sums[0][v] : sums[1][v];
-        out[v] = sum.w > 0 ? glm::dvec3(sum) / sum.w : Rgb(0.0);
-    }
+    for (std::size_t v = 0; v < out.size(); ++v) out[v] = mean[v].mean();
 }
 
 } // namespace radiant::render

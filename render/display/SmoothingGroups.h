@@ -23,7 +23,7 @@ struct SmoothingGroups {
     std::vector<std::array<std::uint32_t, 4>> cornerVertex;
     std::vector<std::uint8_t> cornerCount;
     /// Per patch: 1 when covered (Patch::covered); it counts at a smoothing vertex only where no
-    /// open patch meets, as in vertexRadiosity (RadiosityInterpolation.h).
+    /// open patch meets (OpenFirstMean.h, the rule the probe's interpolation shares).
     std::vector<std::uint8_t> covered;
     std::size_t vertexCount = 0;
 };
@@ -33,7 +33,7 @@ struct SmoothingGroups {
 SmoothingGroups findSmoothingGroups(const PatchMesh& mesh, double maxAngleDegrees = kSmoothingAngleDegrees);
 
 /// Per smoothing vertex: the area-weighted mean radiosity of the open patches meeting there, or of
-/// the covered ones where no open one does (W/m^2).
+/// the covered ones where no open one does (W/m^2; OpenFirstMean).
 /// `patchAreaM2` and `radiosityW_m2` have one entry per patch; `out` is resized to vertexCount.
 void smoothRadiosity(const SmoothingGroups& groups, std::span<const double> patchAreaM2,
                      std::span<const Rgb> radiosityW_m2, std::vector<Rgb>& out);

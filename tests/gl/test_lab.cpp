@@ -372,3 +372,57 @@ TEST_CASE("a click with hierarchical radiosity singles out the links the point g
         render::writePng(lab.frameAndCapture(), std::filesystem::path(directory) / "display-focus-links.png");
     }
 }
+
+TEST_CASE("a click is taken where the button went down, not where a slow frame finds the pointer (issue #16)") {
+    requireDisplay();
+    Lab lab(coarseCornell());
+    lab.send(command::SetTolerance{1e-3});
+    lab.send(command::Run{});
+    waitForSolver(lab);
+    frameUntil(lab, [](const app::Snapshot& s) { return !s.running && s.stats.iteration > 0; });
+
+    const glm::dvec3 floor = render::projectToPixel(lab.camera(), lab.sceneViewport(), {0.42, 0.0, 0.12});
+    const glm::dvec3 wall = render::projectToPixel(lab.camera(), lab.sceneViewport(), {0.15, 0.45, 0.559});
+    // The window's own callbacks, as GLFW calls them while polling: ImGui's button callback, which
+    // chains to the lab's, and the lab's cursor callback (window coordinates; Xvfb's pixel ratio is 1).
+    GLFWwindow* window = glfwGetCurrentContext();
+    REQUIRE(window != nullptr);
+    const GLFWcursorposfun moved = glfwSetCursorPosCallback(window, nullptr);
+    glfwSetCursorPosCallback(window, moved);
+    const GLFWmousebuttonfun button = glfwSetMouseButtonCallback(window, nullptr);
+    glfwSetMouseButtonCallback(window, button);
+    const bool haveCallbacks = moved && button;
+    REQUIRE(haveCallbacks);
+
+    // One slow frame's events: a click on the floor, then the hand moves on to the back wall, where
+    // ImGui reads the pointer when the frame comes (the override stands in for the X server's pointer).
+    moved(window, floor.x, floor.y);
+    button(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
+    button(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, 0);
+    moved(window, wall.x, wall.y);
+    lab.overrideMouse(glm::vec2(wall.x, wall.y), true);  // ImGui's press frame: the button still down
+    lab.frame();
+    lab.overrideMouse(glm::vec2(wall.x, wall.y), false);
+    lab.frame();
+    lab.overrideMouse(std::nullopt);
+    REQUIRE(lab.probePoint());
+    const glm::dvec3 picked = *lab.probePoint();
+    INFO("picked (" << picked.x << ", " << picked.y << ", " << picked.z << ")");
+    CHECK(picked.y == doctest::Approx(0.0).epsilon(1e-6));  // the floor, not the back wall at z = 0.559
+    CHECK(picked.x == doctest::Approx(0.42).epsilon(1e-3).scale(0));
+    CHECK(picked.z == doctest::Approx(0.12).epsilon(1e-3).scale(0));
+
+    // Pressed on the floor, dragged to the wall and let go there within one frame: a drag, not a click,
+    // so the probe stays (taken at the frame's pointer, press and release were both on the wall).
+    moved(window, floor.x, floor.y);
+    button(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_PRESS, 0);
+    moved(window, wall.x, wall.y);
+    button(window, GLFW_MOUSE_BUTTON_LEFT, GLFW_RELEASE, 0);
+    lab.overrideMouse(glm::vec2(wall.x, wall.y), true);
+    lab.frame();
+    lab.overrideMouse(glm::vec2(wall.x, wall.y), false);
+    lab.frame();
+    lab.overrideMouse(std::nullopt);
+    lab.frame();
+    CHECK(lab.probePoint() == std::optional(picked));
+}

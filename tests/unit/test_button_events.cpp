@@ -1,0 +1,127 @@
+// Issue #16: a click in the 3D view is taken where the button went down (ButtonRecorder, fed in
+// event order by the window's callbacks), not where the pointer is when a slow frame reads it.
+// CameraController runs in its own ImGui context with ImGui's pointer and button set by hand, as
+// ImGui 1.86's GLFW backend sets them: the pointer at frame time, a press seen as down for one frame
+// even when released before it.
+#include <doctest/doctest.h>
+
+#include <optional>
+
+#include <imgui.h>
+
+#include "app/window/ButtonEvents.h"
+#include "app/window/CameraController.h"
+#include "render/camera/OrbitCamera.h"
+
+using namespace radiant;
+using radiant::app::ButtonEvents;
+using radiant::app::ButtonRecorder;
+using radiant::app::CameraController;
+
+namespace {
+
+const render::Viewport kView{200, 0, 600, 600};  // right of a 200-wide sidebar
+
+struct Gestures {
+    Gestures() {
+        ImGui::CreateContext();
+        ImGuiIO& io = ImGui::GetIO();
+        io.DisplaySize = {800, 600};
+        io.IniFilename = nullptr;
+        unsigned char* pixels = nullptr;
+        int width = 0, height = 0;
+        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    }
+    ~Gestures() { ImGui::DestroyContext(); }
+    Gestures(const Gestures&) = delete;
+    Gestures& operator=(const Gestures&) = delete;
+
+    /// One frame: ImGui's pointer and left button as the frame reads them, the events since the last.
+    std::optional<glm::dvec2> frame(float x, float y, bool leftDown, const ButtonEvents& events = {}) {
+        ImGuiIO& io = ImGui::GetIO();
+        io.MousePos = {x, y};
+        io.MouseDown[0] = leftDown;
+        io.DeltaTime = 1.0f / 60;
+        ImGui::NewFrame();
+        controller.update(orbit, kView, events);
+        ImGui::EndFrame();
+        return controller.click();
+    }
+
+    render::OrbitCamera orbit{render::Camera{}, glm::dvec3(0, 0, 1)};
+    CameraController controller;
+    ButtonRecorder recorder;
+};
+
+} // namespace
+
+TEST_CASE("a click that a slow frame finds the pointer moved on from is taken where the button went down") {
+    Gestures g;
+    g.recorder.moved({300, 200});
+    g.recorder.button(0, true);
+    g.recorder.button(0, false);
+    g.recorder.moved({700, 500});
+    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
+    const std::optional<glm::dvec2> click = g.frame(700, 500, false, g.recorder.take());
+    REQUIRE(click);
+    CHECK(*click == glm::dvec2(300, 200));
+}
+
+TEST_CASE("with no events recorded (a test's overridden mouse) the click is where ImGui saw the pointer at the press") {
+    Gestures g;
+    CHECK_FALSE(g.frame(350, 250, true));
+    const std::optional<glm::dvec2> click = g.frame(351, 251, false);
+    REQUIRE(click);
+    CHECK(*click == glm::dvec2(350, 250));  // the press frame's pointer
+}
+
+TEST_CASE("pressed, moved beyond the slop and released within one frame is a drag, not a click") {
+    Gestures g;
+    g.recorder.moved({300, 200});
+    g.recorder.button(0, true);
+    g.recorder.moved({310, 200});  // 10 pixels: over the 4-pixel slop
+    g.recorder.button(0, false);
+    g.recorder.moved({700, 500});
+    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
+    CHECK_FALSE(g.frame(700, 500, false, g.recorder.take()));
+
+    // Within the slop, a hand's wobble, it stays a click.
+    g.recorder.moved({300, 200});
+    g.recorder.button(0, true);
+    g.recorder.moved({302, 201});
+    g.recorder.button(0, false);
+    g.recorder.moved({700, 500});
+    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
+    const std::optional<glm::dvec2> click = g.frame(700, 500, false, g.recorder.take());
+    REQUIRE(click);
+    CHECK(*click == glm::dvec2(300, 200));
+}
+
+TEST_CASE("a press on the sidebar is no click in the view, wherever the pointer went before the frame") {
+    Gestures g;
+    g.recorder.moved({100, 200});  // the sidebar
+    g.recorder.button(0, true);
+    g.recorder.button(0, false);
+    g.recorder.moved({400, 300});  // the view
+    CHECK_FALSE(g.frame(400, 300, true, g.recorder.take()));
+    CHECK_FALSE(g.frame(400, 300, false, g.recorder.take()));
+}
+
+TEST_CASE("a press held over frames and released later is measured to where its release event was") {
+    Gestures g;
+    g.recorder.moved({300, 200});
+    g.recorder.button(0, true);
+    CHECK_FALSE(g.frame(300, 200, true, g.recorder.take()));
+    CHECK_FALSE(g.frame(301, 200, true, g.recorder.take()));
+    g.recorder.moved({302, 201});
+    g.recorder.button(0, false);
+    g.recorder.moved({600, 400});
+    const std::optional<glm::dvec2> click = g.frame(600, 400, false, g.recorder.take());
+    REQUIRE(click);
+    CHECK(*click == glm::dvec2(300, 200));
+
+    // take() hands each event over once.
+    const ButtonEvents none = g.recorder.take();
+    CHECK_FALSE(none[0].pressedAt);
+    CHECK_FALSE(none[0].releasedAt);
+}
