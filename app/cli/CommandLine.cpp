@@ -50,7 +50,8 @@ CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene,
     MeshingOptions meshing;
     meshing.maxPatchArea = maxPatchArea;
     CommandSystem system;
-    system.mesh = meshScene(scene, meshing);
+    system.rays = std::make_shared<const RayCaster>(scene);
+    system.mesh = meshScene(scene, meshing, nullptr, system.rays.get());
     std::optional<SolverMethod> named;
     if (!namedMethod.empty()) named = parseMethod(namedMethod);
     SystemChoice choice = chooseSystem(system.mesh, maxPatchArea, grouping, named);
@@ -70,9 +71,11 @@ CommandSystem meshForCommand(const std::string& namedMethod, const Scene& scene,
 std::unique_ptr<Solver> makeCommandSolver(const Scene& scene, const CommandSystem& system, const SolverOptions& options,
                                           Progress* progress) {
     const SolverMethod method = system.choice.method;
+    SolverOptions shared = options;
+    if (!shared.rays) shared.rays = system.rays;
     try {
-        return system.groups ? makeGroupedSolver(method, scene, system.mesh, system.groups, options, progress)
-                             : makeSolver(method, scene, system.mesh, options, progress);
+        return system.groups ? makeGroupedSolver(method, scene, system.mesh, system.groups, shared, progress)
+                             : makeSolver(method, scene, system.mesh, shared, progress);
     } catch (const BudgetError& e) {
         if (!e.where().file.empty()) throw;
         throw BudgetError({scene.name, e.where().element}, e.detail());  // which file is too big

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchGroups.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/scene/Scene.h"
@@ -55,6 +56,9 @@ void addGroupingFlags(CLI::App& sub, GroupingFlags& flags, const std::string& wh
 /// in one line ("radiant: grouping: on: ..."); a defaulted method in another ("radiant: method:
 /// hierarchical (12,000 patches: ...)").
 struct CommandSystem {
+    /// The scene's ray caster, built once for the mesher (covered pieces) and the solver, as the
+    /// lab's solver thread shares one: two BVHs of the Cornell box cost the command ~15 ms.
+    std::shared_ptr<const RayCaster> rays;
     PatchMesh mesh;
     std::shared_ptr<const PatchGroups> groups;  ///< null: every patch an unknown
     std::string groupingReason;

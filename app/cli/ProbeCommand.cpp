@@ -85,8 +85,8 @@ int runProbe(const ProbeCommandOptions& options) {
     const MethodChoice& choice = system.choice;
     const SolverMethod method = choice.method;
     const PatchMesh& mesh = system.mesh;
-    // One BVH for the scene: the probe's visibility and the solver's share it.
-    const auto rays = std::make_shared<const RayCaster>(scene);
+    // One BVH for the scene: the mesher's, the probe's visibility and the solver's share it.
+    const std::shared_ptr<const RayCaster>& rays = system.rays;
     const Probe probe(scene, mesh, rays.get());
     std::vector<std::string> warnings = scene.warnings;
     glm::dvec3 onSurface = point;

@@ -4,9 +4,11 @@
 // so a solver that quietly built its own again would fail here.
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 
+#include "app/cli/CommandLine.h"
 #include "app/solver/SolverThread.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/probe/Probe.h"
@@ -90,4 +92,15 @@ TEST_CASE("the lab builds one ray caster per loaded scene and shares it across m
     CHECK(otherBuilds == 1);  // a new scene: its own caster, once
     REQUIRE(other->rays);
     CHECK(other->rays != remeshed->rays);
+}
+
+TEST_CASE("a command builds one ray caster for its mesher (the blocks' covered pieces) and its solver") {
+    const Scene box = loadScene("cornell-box").scene;
+    const std::uint64_t before = RayCaster::constructed();
+    const CommandSystem system = meshForCommand("gauss-seidel", box, 0.01, GroupingMode::Off);
+    const bool anyCovered = std::any_of(system.mesh.patches.begin(), system.mesh.patches.end(), [](const Patch& p) { return p.covered; });
+    CHECK(anyCovered);  // the mesher traced rays for the pieces under the blocks
+    const auto solver = makeCommandSolver(box, system, SolverOptions{});
+    solver->step();
+    CHECK(RayCaster::constructed() - before == 1);
 }
