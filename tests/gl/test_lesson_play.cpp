@@ -245,6 +245,10 @@ TEST_CASE("a saved session reopens to the same solution, materials, method, disp
         lab.send(app::command::SetMethod{SolverMethod::Jacobi});
         CHECK(lab.editMaterial(light, Rgb(0.78), Rgb(34.0, 24.0, 8.0)).empty());
         lab.display().showLinks = true;
+        // Converged far below the lab's 1e-4 (the session keeps the tolerance): a solve stopped at
+        // 1e-4 depends on where it started and on how the commands fell between its steps (in an
+        // ASan build the two labs ended 5e-4 apart, every run), a converged one does not.
+        lab.send(app::command::SetTolerance{1e-10});
         lab.send(app::command::Run{});
         settle(lab);
         const glm::dvec3 floorPoint{0.42, 0.0, 0.12};
@@ -270,13 +274,13 @@ TEST_CASE("a saved session reopens to the same solution, materials, method, disp
     CHECK(reopened.display().showLinks);
     REQUIRE(reopened.probeReading());
     CHECK(glm::length(reopened.probeReading()->at.point - probed) < 1e-6);
-    // The same mesh, method, materials and tolerance from the same start: the same iterates.
+    // The same mesh, method, materials and tolerance: the same solution, to the tolerance.
     REQUIRE(s.radiosity.size() == solved.size());
     double worst = 0;
     for (std::size_t i = 0; i < solved.size(); ++i)
         for (int band = 0; band < 3; ++band)
             worst = std::max(worst, std::abs(s.radiosity[i][band] - solved[i][band]) / std::max(1e-12, std::abs(solved[i][band])));
-    CHECK(worst < 1e-12);
+    CHECK(worst < 1e-6);
     std::filesystem::remove(file);
 }
 
