@@ -18,7 +18,7 @@ namespace radiant {
 
 namespace {
 
-std::uint64_t pairSeed(std::uint64_t seed, ElementIndex receiver, ElementIndex source) {
+std::uint64_t linkPairSeed(std::uint64_t seed, ElementIndex receiver, ElementIndex source) {
     return hierarchical::mix(seed ^ ((static_cast<std::uint64_t>(receiver) << 32) | source));
 }
 
@@ -150,7 +150,7 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     double visible = 1, share = 1;
     bool hiddenButSeen = false;
     if (caster_) {
-        const std::uint64_t seed = pairSeed(options_.seed, receiver, source);
+        const std::uint64_t seed = linkPairSeed(options_.seed, receiver, source);
         visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed, &rays);
         // Every ray blocked stops refinement, yet 4 rays all miss a visible fraction v with chance
         // (1 - v)^4 (0.4 at v = 0.2): the floor's elements along the tall block's shadow, partly lit,
