@@ -12,6 +12,7 @@
 #include "app/window/ButtonEvents.h"
 #include "app/window/CameraController.h"
 #include "render/camera/OrbitCamera.h"
+#include "tests/support/HeadlessImGui.h"
 
 using namespace radiant;
 using radiant::app::ButtonEvents;
@@ -23,18 +24,7 @@ namespace {
 const render::Viewport kView{200, 0, 600, 600};  // right of a 200-wide sidebar
 
 struct Gestures {
-    Gestures() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = {800, 600};
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-    }
-    ~Gestures() { ImGui::DestroyContext(); }
-    Gestures(const Gestures&) = delete;
-    Gestures& operator=(const Gestures&) = delete;
+    test::HeadlessImGui imgui;
 
     /// One frame: ImGui's pointer and left button as the frame reads them, the events since the last.
     std::optional<glm::dvec2> frame(float x, float y, bool leftDown, const ButtonEvents& events = {}) {

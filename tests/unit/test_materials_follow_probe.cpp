@@ -11,6 +11,7 @@
 #include "app/panels/MaterialsPanel.h"
 #include "app/solver/LiveSolve.h"
 #include "app/solver/SolverThread.h"
+#include "tests/support/HeadlessImGui.h"
 
 using namespace radiant;
 using namespace radiant::app;
@@ -36,20 +37,13 @@ std::shared_ptr<const Scene> twoPlates() {
 
 /// Lays out one frame of the panel in its own ImGui context.
 void drawOnce(MaterialsPanel& panel) {
-    ImGui::CreateContext();
-    ImGuiIO& io = ImGui::GetIO();
-    io.DisplaySize = {800, 600};
-    io.IniFilename = nullptr;
-    unsigned char* pixels = nullptr;
-    int width = 0, height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
+    const radiant::test::HeadlessImGui imgui;
     ImGui::NewFrame();
     ImGui::SetNextWindowSize({400, 600});
     ImGui::Begin("materials", nullptr, ImGuiWindowFlags_NoSavedSettings);
     panel.draw();
     ImGui::End();
     ImGui::EndFrame();
-    ImGui::DestroyContext();
 }
 
 } // namespace

@@ -5,19 +5,14 @@
 #include <imgui.h>
 
 #include "app/ui/SidebarLayout.h"
+#include "tests/support/HeadlessImGui.h"
 
 namespace {
 
 /// One ImGui context laying out a 300 x 400 window for the duration of a test.
 struct LayoutFrame {
+    radiant::test::HeadlessImGui imgui;
     LayoutFrame() {
-        ImGui::CreateContext();
-        ImGuiIO& io = ImGui::GetIO();
-        io.DisplaySize = {800, 600};
-        io.IniFilename = nullptr;
-        unsigned char* pixels = nullptr;
-        int width = 0, height = 0;
-        io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
         ImGui::NewFrame();
         ImGui::SetNextWindowPos({0, 0});
         ImGui::SetNextWindowSize({300, 400});
@@ -26,7 +21,6 @@ struct LayoutFrame {
     ~LayoutFrame() {
         ImGui::End();
         ImGui::EndFrame();
-        ImGui::DestroyContext();
     }
     LayoutFrame(const LayoutFrame&) = delete;
     LayoutFrame& operator=(const LayoutFrame&) = delete;
