@@ -38,6 +38,23 @@ struct Gestures {
         return controller.click();
     }
 
+    /// A left click between two frames, as the window's events record it: pressed at `press`,
+    /// released at `release`, the pointer then moved on to `after`.
+    void clickBetweenFrames(const glm::dvec2& press, const glm::dvec2& release, const glm::dvec2& after) {
+        recorder.moved(press);
+        recorder.button(0, true);
+        if (release != press) recorder.moved(release);
+        recorder.button(0, false);
+        recorder.moved(after);
+    }
+
+    /// The slow frame that sees the button down with the pointer already moved on to (x, y), then the frame after
+    /// the release: no click in the first; the second's click, if any.
+    std::optional<glm::dvec2> slowFrames(float x, float y) {
+        CHECK_FALSE(frame(x, y, true, recorder.take()));
+        return frame(x, y, false, recorder.take());
+    }
+
     render::OrbitCamera orbit{render::Camera{}, glm::dvec3(0, 0, 1)};
     CameraController controller;
     ButtonRecorder recorder;
@@ -47,12 +64,8 @@ struct Gestures {
 
 TEST_CASE("a click that a slow frame finds the pointer moved on from is taken where the button went down") {
     Gestures g;
-    g.recorder.moved({300, 200});
-    g.recorder.button(0, true);
-    g.recorder.button(0, false);
-    g.recorder.moved({700, 500});
-    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
-    const std::optional<glm::dvec2> click = g.frame(700, 500, false, g.recorder.take());
+    g.clickBetweenFrames({300, 200}, {300, 200}, {700, 500});
+    const std::optional<glm::dvec2> click = g.slowFrames(700, 500);
     REQUIRE(click);
     CHECK(*click == glm::dvec2(300, 200));
 }
@@ -67,34 +80,20 @@ TEST_CASE("with no events recorded (a test's overridden mouse) the click is wher
 
 TEST_CASE("pressed, moved beyond the slop and released within one frame is a drag, not a click") {
     Gestures g;
-    g.recorder.moved({300, 200});
-    g.recorder.button(0, true);
-    g.recorder.moved({310, 200});  // 10 pixels: over the 4-pixel slop
-    g.recorder.button(0, false);
-    g.recorder.moved({700, 500});
-    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
-    CHECK_FALSE(g.frame(700, 500, false, g.recorder.take()));
+    g.clickBetweenFrames({300, 200}, {310, 200}, {700, 500});  // 10 pixels: over the 4-pixel slop
+    CHECK_FALSE(g.slowFrames(700, 500));
 
     // Within the slop, a hand's wobble, it stays a click.
-    g.recorder.moved({300, 200});
-    g.recorder.button(0, true);
-    g.recorder.moved({302, 201});
-    g.recorder.button(0, false);
-    g.recorder.moved({700, 500});
-    CHECK_FALSE(g.frame(700, 500, true, g.recorder.take()));
-    const std::optional<glm::dvec2> click = g.frame(700, 500, false, g.recorder.take());
+    g.clickBetweenFrames({300, 200}, {302, 201}, {700, 500});
+    const std::optional<glm::dvec2> click = g.slowFrames(700, 500);
     REQUIRE(click);
     CHECK(*click == glm::dvec2(300, 200));
 }
 
 TEST_CASE("a press on the sidebar is no click in the view, wherever the pointer went before the frame") {
     Gestures g;
-    g.recorder.moved({100, 200});  // the sidebar
-    g.recorder.button(0, true);
-    g.recorder.button(0, false);
-    g.recorder.moved({400, 300});  // the view
-    CHECK_FALSE(g.frame(400, 300, true, g.recorder.take()));
-    CHECK_FALSE(g.frame(400, 300, false, g.recorder.take()));
+    g.clickBetweenFrames({100, 200}, {100, 200}, {400, 300});  // on the sidebar, then over the view
+    CHECK_FALSE(g.slowFrames(400, 300));
 }
 
 TEST_CASE("a press held over frames and released later is measured to where its release event was") {
