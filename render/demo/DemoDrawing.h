@@ -26,12 +26,15 @@ struct DemoSegment {
 };
 
 struct DemoLabel {
-    glm::vec3 anchor{0.0f};  ///< m: the label's left end, centred vertically
+    glm::vec3 anchor{0.0f};  ///< m: the label's left end (right end if `endsAtAnchor`), centred vertically
     std::string text;        ///< may hold several lines
     glm::vec4 colour{1.0f};
     /// Drawn at its anchor whatever it covers (a tick label, whose place is its meaning); other
     /// labels move clear of each other and of it (app/ui/LabelLayout.h).
     bool pinned = false;
+    /// The text reads to the left of the anchor: a label beside the left of a figure stays against it
+    /// whatever the text's width at the UI's scale.
+    bool endsAtAnchor = false;
 };
 
 class DemoDrawing {
@@ -59,6 +62,10 @@ public:
     void arrow(const glm::vec3& from, const glm::vec3& to, float head, const glm::vec4& colour, float widthPixels = 3.0f);
     void label(const glm::vec3& anchor, std::string text, const glm::vec4& colour = glm::vec4(1.0f)) {
         labels.push_back({anchor, std::move(text), colour});
+    }
+    /// A label whose right end is at `anchor`.
+    void labelLeftOf(const glm::vec3& anchor, std::string text, const glm::vec4& colour = glm::vec4(1.0f)) {
+        labels.push_back({anchor, std::move(text), colour, false, true});
     }
     void pinnedLabel(const glm::vec3& anchor, std::string text, const glm::vec4& colour = glm::vec4(1.0f)) {
         labels.push_back({anchor, std::move(text), colour, true});

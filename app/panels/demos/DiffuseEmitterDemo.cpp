@@ -18,7 +18,14 @@ DiffuseEmitterNumbers diffuseEmitterNumbers(const DiffuseEmitterSettings& s) {
             kHemisphereProjectedSolidAngle};
 }
 
-DemoFraming DiffuseEmitterDemo::framing() const { return framingFrom({0.4, 2.8, 8.6}, {0.4, 1.5, 0.0}, 50); }
+// The emitter left of the view's centre, so that the probes' labels, which read to the right, fit
+// beside their probes at a projector's UI scale of 1.5 (from farther away and centred on the emitter,
+// the three were pushed down into each other and over the rays); framed for a lesson's wide view.
+DemoFraming DiffuseEmitterDemo::framing() const {
+    DemoFraming framing = framingFrom({2.2, 2.7, 7.2}, {2.2, 1.5, 0.0}, 50);
+    framing.framedAspect = 1.6;
+    return framing;
+}
 
 // The emitter as a square of area A on the floor, brighter as L grows; three probes at 0, 45 and 75
 // degrees from its normal, each with its line of sight and its reading: the intensity I = L A cos
@@ -33,7 +40,7 @@ render::DemoDrawing DiffuseEmitterDemo::picture(const std::optional<PickRay>&) c
     const float glow = static_cast<float>(0.35 + 0.65 * std::clamp(std::log10(settings.radianceW_m2sr) / 4.0, 0.0, 1.0));
     d.quad(point3(-h, 0, -h), point3(h, 0, -h), point3(h, 0, h), point3(-h, 0, h), glm::vec4(glm::vec3(kLight) * glow, 1.0f));
     d.loop({point3(-h, 0, -h), point3(h, 0, -h), point3(h, 0, h), point3(-h, 0, h)}, kLight);
-    d.label(point3(h + 0.15, 0, h + 0.2),
+    d.label(point3(-h, 0, h + 0.9),
             printed("A = %.2f m^2, L = %.4g W/(m^2 sr)\nP = pi L A = %.5g W\nB = pi L = %.5g W/m^2", settings.areaM2,
                     settings.radianceW_m2sr, n.power.value(), n.exitance.value()), kLight);
 
@@ -42,9 +49,9 @@ render::DemoDrawing DiffuseEmitterDemo::picture(const std::optional<PickRay>&) c
     const float lobe = 1.1f;
     d.circle({0, lobe, 0}, {1, 0, 0}, {0, 1, 0}, lobe, kGrid, 2.0f, 72);
     const double peakIntensity = settings.radianceW_m2sr * settings.areaM2;
-    d.label(point3(-2 * lobe - 0.2, 2 * lobe + 0.2, 0), printed("intensity lobe I = L A cos theta\n(top: %.4g W/sr)", peakIntensity), kAxis);
+    d.labelLeftOf(point3(-1.15 * lobe, 1.8 * lobe, 0), printed("intensity lobe\nI = L A cos theta\n(top: %.4g W/sr)", peakIntensity), kAxis);
 
-    constexpr double kProbeDistance = 3.4;
+    constexpr double kProbeDistance = 3.0;
     for (const double degrees : {0.0, 45.0, 75.0}) {
         const double theta = degrees * std::numbers::pi / 180.0;
         const glm::vec3 probe = point3(kProbeDistance * std::sin(theta), kProbeDistance * std::cos(theta), 0);
