@@ -262,14 +262,6 @@ void HierarchicalSolver::buildPatchRows() {
         std::vector<double> valueScratch;
         std::vector<std::pair<ElementIndex, unsigned>> chain;  // the split patch's chains, see below
         const PatchPolygon* patchPolygon = nullptr;
-        // The deepest element that holds the whole patch, and whether `e` is it or one of its ancestors.
-        ElementIndex home = kNoElement;
-        const auto holds = [&](ElementIndex e) {
-            if (home == kNoElement || tree_.depth(e) > tree_.depth(home)) return false;
-            ElementIndex a = home;
-            while (tree_.depth(a) > tree_.depth(e)) a = tree_.parent(a);
-            return a == e;
-        };
         std::uint64_t patchSeed = 0;
         double patchIrradiance = 0;
         // A source that brings the patch much of its light (the lamp's pieces) is seen through the
@@ -287,10 +279,14 @@ void HierarchicalSolver::buildPatchRows() {
                              tree_.area(links_[link].receiver) <= kLargeReceiver * patchPolygon->area;
             const bool lamp = bright(term, q);
             if (caster_ == nullptr || (own && !lamp)) return static_cast<double>(linkShare_[link]);
-            // No face can block a segment between the link's receiver (which holds the patch) and its
-            // source (which holds the term): the patch sees all of the term, no ray needed.
-            if (!partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 && holds(links_[link].receiver) &&
-                shaftClear(link))
+            // No face can block a segment between the link's receiver and its source (which holds the
+            // term): every point of the receiver sees all of the term, no ray needed. The row takes
+            // this term's kernel only at those of the patch's points that lie in the receiver (the
+            // walks below reach a link through the elements holding a point), so 1 is their exact
+            // visibility, also where the patch crosses the receiver's edge (requiring the receiver to
+            // hold the whole patch left 39k of the Cornell box's 341k ray sets: docs/ARCHITECTURE.md,
+            // "Accuracy", item 18).
+            if (!partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 && shaftClear(link))
                 return 1.0;
             // Rays from the patch to the term: the same whichever link of the patch's points asked.
             double& known = termVisibility[term];
@@ -322,13 +318,6 @@ void HierarchicalSolver::buildPatchRows() {
             // patch (their links say the irradiance varies within it), 2 x 2 elsewhere.
             const ElementIndex atCentroid = tree_.locate(patch.surface, patch.face, patch.centroid);
             patchIrradiance = atCentroid < pushedIrradiance_.size() ? maxBand(pushedIrradiance_[atCentroid]) : 0.0;
-            home = atCentroid;
-            const auto holdsPatch = [&](ElementIndex e) {
-                for (const glm::dvec3& corner : patch.polygon.corners())
-                    if (!tree_.contains(e, corner)) return false;
-                return true;
-            };
-            while (home != kNoElement && !holdsPatch(home)) home = tree_.parent(home);
             const int order = atCentroid != kNoElement && 4 * tree_.area(atCentroid) < patch.area ? 3 : 2;
             std::array<glm::dvec3, 4> points{};
             std::array<double, 4> weights{};
