@@ -3,7 +3,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <cmath>
 #include <optional>
 
 #include "app/panels/demos/LectureDemo.h"
@@ -50,26 +49,8 @@ void drawDemoLabels(const render::DemoDrawing& drawing, const render::Camera& ca
     draw->PopClipRect();
 }
 
-namespace {
-
-/// `camera` with its field of view widened, in a view narrower than `framedAspect`, so that it shows
-/// the framed width: a wide figure (the diffuse emitter's probes, whose labels read to their right)
-/// in a tall view (no lesson caption, 1100 x 950 at UI scale 1.5) had its sides cut by the vertical
-/// field alone and its labels pushed onto it.
-render::Camera showingFramedWidth(render::Camera camera, double aspect, double framedAspect) {
-    if (aspect >= framedAspect || aspect <= 0) return camera;
-    // Landscape: the vertical field grows until the width is the framed one. Portrait: the camera
-    // takes its field as the horizontal one (render::Camera), which grows to the framed width too.
-    const double widen = framedAspect / std::max(aspect, 1.0);
-    camera.fieldOfView = Radians(2 * std::atan(std::tan(0.5 * camera.fieldOfView.value()) * widen));
-    return camera;
-}
-
-} // namespace
-
-void drawDemoPicture(const LectureDemo& demo, render::DemoRenderer& renderer, const render::Camera& framedCamera,
+void drawDemoPicture(const LectureDemo& demo, render::DemoRenderer& renderer, const render::Camera& camera,
                      const render::Viewport& viewport, float pixelRatio, float uiScale) {
-    const render::Camera camera = showingFramedWidth(framedCamera, viewport.aspect(), demo.framing().framedAspect);
     std::optional<PickRay> cursor;
     const ImGuiIO& io = ImGui::GetIO();
     const glm::dvec2 pointer{io.MousePos.x * pixelRatio, io.MousePos.y * pixelRatio};

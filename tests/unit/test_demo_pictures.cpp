@@ -205,3 +205,22 @@ TEST_CASE("a demo puts the scene's camera aside and gives it back, however many 
     view.close();  // nothing open: nothing changes
     CHECK(glm::length(orbit.camera().eye - moved.eye) < 1e-12);
 }
+
+TEST_CASE("a demo framed wider than the view shows its framed width through a wider field") {
+    render::Camera framed;
+    framed.fieldOfView = Radians(50 * std::numbers::pi / 180);
+    const double framedHalfWidth = std::tan(0.5 * framed.fieldOfView.value()) * 1.6;  // at unit distance
+    // A lesson's wide view keeps the demo's field; a tall one (no caption) widens it to the same width.
+    CHECK(app::showingFramedWidth(framed, 1.8, 1.6).fieldOfView.value() == framed.fieldOfView.value());
+    for (const double aspect : {1.16, 1.4}) {
+        CAPTURE(aspect);
+        const render::Camera shown = app::showingFramedWidth(framed, aspect, 1.6);
+        CHECK(shown.verticalFieldOfView(aspect).value() > framed.fieldOfView.value());
+        CHECK(std::tan(0.5 * shown.verticalFieldOfView(aspect).value()) * aspect == relativeTo(framedHalfWidth, 1e-12));
+    }
+    // Portrait: the camera's field is its horizontal one, widened to the framed width.
+    const render::Camera portrait = app::showingFramedWidth(framed, 0.7, 1.6);
+    CHECK(std::tan(0.5 * portrait.fieldOfView.value()) == relativeTo(framedHalfWidth, 1e-12));
+    // A demo framed for no particular width (0) keeps its field in any view.
+    CHECK(app::showingFramedWidth(framed, 0.7, 0).fieldOfView.value() == framed.fieldOfView.value());
+}

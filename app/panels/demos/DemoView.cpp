@@ -1,5 +1,7 @@
 #include "app/panels/demos/DemoView.h"
 
+#include <algorithm>
+#include <cmath>
 #include <numbers>
 
 #include <glm/geometric.hpp>
@@ -18,6 +20,15 @@ DemoFraming framingFrom(const glm::dvec3& eye, const glm::dvec3& target, double 
     framing.camera.farPlane = distance * 20.0;
     framing.pivot = target;
     return framing;
+}
+
+render::Camera showingFramedWidth(render::Camera camera, double aspect, double framedAspect) {
+    if (aspect >= framedAspect || aspect <= 0) return camera;
+    // Landscape: the vertical field grows until the width is the framed one. Portrait: the camera
+    // takes its field as the horizontal one (render::Camera), which grows to the framed width too.
+    const double widen = framedAspect / std::max(aspect, 1.0);
+    camera.fieldOfView = Radians(2 * std::atan(std::tan(0.5 * camera.fieldOfView.value()) * widen));
+    return camera;
 }
 
 void DemoView::open(const LectureDemo& demo) {

@@ -28,6 +28,13 @@ struct DemoFraming {
 /// distance (the demos span metres, not the lab's 100 m default).
 DemoFraming framingFrom(const glm::dvec3& eye, const glm::dvec3& target, double fieldOfViewDegrees);
 
+/// `camera` with its field of view widened, in a view (width / height `aspect`) narrower than
+/// `framedAspect`, so that it shows the framed width: a wide figure (the diffuse emitter's probes,
+/// whose labels read to their right) in a tall view (no lesson caption, 1100 x 950 at UI scale 1.5)
+/// had its sides cut by the vertical field alone and its labels pushed onto it. The lab draws, picks
+/// and reports the demo's camera through this.
+render::Camera showingFramedWidth(render::Camera camera, double aspect, double framedAspect);
+
 class LectureDemo : public Panel {
 public:
     [[nodiscard]] bool openByDefault() const override { return false; }
