@@ -10,7 +10,8 @@ void streamSnapshotToRenderer(const Snapshot& snapshot, render::PatchRenderer& r
         renderer.setMaterials(*snapshot.scene);
         materialsShown = snapshot.scene;
     }
-    renderer.setRadiosity(snapshot.radiosity, snapshot.generation, snapshot.stats.shooter);
+    const bool shooting = snapshot.running || snapshot.lastStepByHand;
+    renderer.setRadiosity(snapshot.radiosity, snapshot.generation, shooting ? snapshot.stats.shooter : -1);
     renderer.setLinks(snapshot.linkSegments);
     renderer.setFocusLinks(snapshot.focusLinkSegments);
     renderer.setImportance(snapshot.importance);

@@ -50,6 +50,10 @@ struct Snapshot {
     SolveHistory history;                   ///< every step of the segment being solved (ConvergenceRecord.h)
     ConvergenceRecord convergence;          ///< every method's earlier segments, for the overlaid plot
     bool running = false;                   ///< stepping by itself until converged or paused
+    /// The last step came from a Step command (N in the lab), not from running: the 3D view outlines
+    /// progressive's last shooter while the solve runs or is stepped, not once it has converged
+    /// (a converged Cornell box showed a stray outline on the green wall: its last, tiny shot).
+    bool lastStepByHand = false;
     double tolerance = kSolveDefaults.tolerance;  ///< running stops when the residual falls below this
     double linkTolerance = SolverOptions{}.linkEpsilon;  ///< hierarchical/importance refinement (SolverOptions)
     std::string error;                      ///< the last command's failure, empty when it succeeded

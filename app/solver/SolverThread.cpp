@@ -68,6 +68,7 @@ struct SolverThread::State {
     std::optional<View> view;  ///< the lab's camera for importance; none: the scene's home view
     bool running = false;
     std::size_t pendingSteps = 0;
+    bool lastStepByHand = false;  ///< Snapshot::lastStepByHand
     double tolerance = kSolveDefaults.tolerance;
     ConvergenceRecorder history{kSolveDefaults.method};
     /// The scene as LoadScene gave it, before any material edit: what ResetMaterials restores.
@@ -252,11 +253,13 @@ void SolverThread::workerLoop(const std::stop_token& stop) {
                 continue;
             }
             activity_.store(SolverActivity::Solving);
+            const bool byHand = !state.running && state.pendingSteps > 0;
             const IterationStats stats = [&] {
                 const CancellationScope cancellable(progress_);
                 return state.solver->step();
             }();
             state.history.append(stats);
+            state.lastStepByHand = byHand;
             if (state.pendingSteps > 0) --state.pendingSteps;
             if (state.running && stats.residual < state.tolerance) state.running = false;
             const bool settled = !state.running && state.pendingSteps == 0;
@@ -548,6 +551,7 @@ void SolverThread::publish(State& state) {
     s->history = state.history.steps().snapshot();
     s->convergence = state.history.snapshot();
     s->running = state.running || state.pendingSteps > 0;
+    s->lastStepByHand = state.lastStepByHand;
     s->tolerance = state.tolerance;
     s->linkTolerance = options_.linkEpsilon;
     s->error = state.error;

@@ -159,6 +159,23 @@ TEST_CASE("run stops by itself once the residual is under the tolerance") {
     CHECK_FALSE(snapshot->running);
 }
 
+TEST_CASE("the snapshot says whether its last step was taken by hand, so a converged solve shows no shooter") {
+    SolverThread thread({}, furnaceFactory(0.5, 1.0));
+    thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
+    thread.send(command::SetTolerance{1e-3});
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    CHECK_FALSE(thread.snapshot()->running);
+    CHECK_FALSE(thread.snapshot()->lastStepByHand);  // ran to convergence by itself
+    thread.send(command::Step{1});
+    thread.waitUntilIdle();
+    CHECK(thread.snapshot()->lastStepByHand);  // N pressed: the step's shooter is the lesson
+    thread.send(command::Reset{});
+    thread.send(command::Run{});
+    thread.waitUntilIdle();
+    CHECK_FALSE(thread.snapshot()->lastStepByHand);
+}
+
 TEST_CASE("a material edit reaches the solver and the published scene, and reset starts over") {
     SolverThread thread({}, furnaceFactory(0.5, 1.0));
     thread.send(command::LoadScene{sharedUnitPlate(), MeshingOptions{0.25, 1000}});
