@@ -24,7 +24,6 @@
 #include "app/panels/LessonsPanel.h"
 #include "app/panels/IntegralsPanel.h"
 #include "app/panels/demos/DemoView.h"
-#include "app/panels/demos/LectureDemo.h"
 #include "app/panels/demos/LectureDemosPanel.h"
 #include "app/panels/MaterialsPanel.h"
 #include "app/panels/ProbePanel.h"
@@ -356,7 +355,7 @@ struct Lab::State {
         const LectureDemo* demo = demoView.active();
         controller.update(orbit, viewInUiUnits, buttons.take());
         // A demo framed wider than the view is shown, picked and reported through a wider field.
-        lastCamera = demo ? showingFramedWidth(orbit.camera(), viewport.aspect(), demo->framing().framedAspect) : orbit.camera();
+        lastCamera = demoView.shownCamera(orbit.camera(), viewport.aspect());
         if (!demo) sendViewWhenStill(now);  // a demo's camera is not the scene's: importance keeps the scene's
         if (const std::optional<glm::dvec2> click = controller.click(); click && !demo)
             pickAt(*click * static_cast<double>(pixelRatio));

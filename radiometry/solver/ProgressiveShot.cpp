@@ -96,6 +96,14 @@ double nextUniform(std::uint64_t& state) {
     return static_cast<double>(mix64(state += 0x9e3779b97f4a7c15ULL) >> 11) * 0x1.0p-53;
 }
 
+/// A stride in [1, n] coprime to n, from `hash`: stepping i -> stride i mod n visits 0..n-1 once
+/// each, in an order that pairs two sets of n strata without lining them up.
+std::uint64_t coprimeStride(std::uint64_t hash, std::uint64_t n) {
+    std::uint64_t stride = 1 + hash % n;
+    while (std::gcd(stride, n) != 1) ++stride;
+    return stride;
+}
+
 /// A point of the polygon from (u, v) in [0, 1)^2: bilinear on a quad (area-uniform on the
 /// parallelograms meshing makes of rectangles), the square-root map on a triangle.
 glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
@@ -188,8 +196,7 @@ ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const doub
     const int n = std::max(1, g.options.visibilityRays * factor);
     const auto count = static_cast<std::uint64_t>(n);
     std::uint64_t state = pairSeed(g.options.seed, group, g.timesShot[group]++);
-    std::uint64_t stride = 1 + mix64(state) % count;
-    while (std::gcd(stride, count) != 1) ++stride;
+    const std::uint64_t stride = coprimeStride(mix64(state), count);
     const std::uint64_t offset = mix64(state + 1) % count;
     ShotTargets targets;
     targets.points.reserve(count);
@@ -214,10 +221,8 @@ ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const doub
 class StratifiedOrigins {
 public:
     StratifiedOrigins(const PatchPolygon& polygon, int n, std::uint64_t seed)
-        : polygon_(polygon), count_(static_cast<std::uint64_t>(n)), state_(seed), offset_(mix64(seed + 1) % count_) {
-        stride_ = 1 + mix64(seed) % count_;
-        while (std::gcd(stride_, count_) != 1) ++stride_;
-    }
+        : polygon_(polygon), count_(static_cast<std::uint64_t>(n)), state_(seed), offset_(mix64(seed + 1) % count_),
+          stride_(coprimeStride(mix64(seed), count_)) {}
     glm::dvec3 next() {
         const double n = static_cast<double>(count_);
         const double u = (static_cast<double>(index_) + nextUniform(state_)) / n;
@@ -228,7 +233,7 @@ public:
 
 private:
     const PatchPolygon& polygon_;
-    std::uint64_t count_, state_, offset_, stride_ = 1, index_ = 0;
+    std::uint64_t count_, state_, offset_, stride_, index_ = 0;
 };
 
 /// Unblocked fraction of `rays` segments from stratified points of the receiver to `rays` of the
@@ -250,8 +255,7 @@ double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, s
     const auto n = static_cast<std::uint64_t>(rays);
     const std::uint64_t spacing = std::max<std::uint64_t>(1, count / n);
     const std::uint64_t first = mix64(seed) % count;
-    std::uint64_t stride = 1 + mix64(seed + 2) % n;
-    while (std::gcd(stride, n) != 1) ++stride;
+    const std::uint64_t stride = coprimeStride(mix64(seed + 2), n);
     StratifiedOrigins origins(g.polygons[receiver], rays, mix64(seed + 3));
     double unblocked = 0, total = 0, unblockedBehind = 0, totalBehind = 0;
     for (std::uint64_t k = 0; k < n; ++k) {
@@ -407,8 +411,7 @@ double perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size
     const auto fraction = [&](int n, std::uint64_t pairsSeed, const auto& at) {
         StratifiedOrigins fromPoints(r, n, pairsSeed);
         const auto count = static_cast<std::uint64_t>(n);
-        std::uint64_t stride = 1 + mix64(pairsSeed + 2) % count;
-        while (std::gcd(stride, count) != 1) ++stride;
+        const std::uint64_t stride = coprimeStride(mix64(pairsSeed + 2), count);
         const std::uint64_t offset = mix64(pairsSeed + 3) % count;
         int facing = 0, through = 0;
         for (std::uint64_t i = 0; i < count; ++i) {

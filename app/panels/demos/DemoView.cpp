@@ -36,6 +36,7 @@ void DemoView::open(const LectureDemo& demo) {
     const DemoFraming framing = demo.framing();
     orbit_ = render::OrbitCamera(framing.camera, framing.pivot);
     active_ = &demo;
+    framedAspect_ = framing.framedAspect;
 }
 
 void DemoView::close() {
@@ -43,6 +44,11 @@ void DemoView::close() {
     orbit_ = *sceneCamera_;
     sceneCamera_.reset();
     active_ = nullptr;
+    framedAspect_ = 0;
+}
+
+render::Camera DemoView::shownCamera(const render::Camera& orbitCamera, double aspect) const {
+    return active_ ? showingFramedWidth(orbitCamera, aspect, framedAspect_) : orbitCamera;
 }
 
 } // namespace radiant::app

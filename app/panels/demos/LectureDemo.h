@@ -20,7 +20,8 @@ struct DemoFraming {
     render::Camera camera;
     glm::dvec3 pivot{0.0};
     /// A figure wider than it is tall sets the narrowest view (width / height) it is framed for: a
-    /// narrower view widens the camera's field to show that width (app/ui/DemoPicture.cpp). 0: none.
+    /// narrower view widens the camera's field to show that width (showingFramedWidth, through
+    /// DemoView::shownCamera). 0: none.
     double framedAspect = 0;
 };
 
