@@ -116,6 +116,18 @@ constexpr double kBrightHidden = 0.01;
 /// patches' distance from converged Gauss-Seidel (seeds 1-6) came out the same at 16, 4 and 1.
 constexpr double kFarTermDistanceSquaredOverArea = 4;
 
+/// A far term's estimate for expandSourceScaled: the point-to-point kernel from x to q's centroid,
+/// A cos cos / (pi r^2). Only the ratios of a link's far terms count (their sum is the whole source's
+/// kernel at the patch's points), and the one point's bias is nearly the same for a link's far terms.
+/// kernelAt's Gauss rule read each term's source rule (~700 bytes an element, scattered) for most of
+/// the Cornell box's ~1.05M row terms: without it the solve's CPU is ~7% lower and the patches within
+/// 0.0015 percentage points of before (docs/ARCHITECTURE.md, "Accuracy", Hierarchical item 19).
+double centroidKernel(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q) {
+    const glm::dvec3 d = q.centroid - x;
+    const double r2 = glm::dot(d, d);
+    return q.area * std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(q.normal, d)) / (std::numbers::pi * r2 * r2);
+}
+
 /// Whether a gather at x reads `source` through its children: area over squared distance above
 /// `expansion` (HierarchicalSolver::kSourceExpansion; expandSource says why).
 bool readThroughChildren(const ElementTree& tree, ElementIndex source, const glm::dvec3& x, double expansion) {
@@ -353,7 +365,7 @@ void HierarchicalSolver::buildPatchRows() {
                     for (std::size_t i = 0; i < points.size(); ++i) f += weights[i] * kernelAt(points[i], n, q, rule);
                     return f;
                 };
-                const auto estimate = [&](ElementIndex source, const PatchPolygon& q) { return kernelAt(P.centroid, n, q, sourceRules_[source]); };
+                const auto estimate = [&](ElementIndex, const PatchPolygon& q) { return centroidKernel(P.centroid, n, q); };
                 gatherTerms(
                     commonLeaf, P.centroid, [&](const PatchPolygon& q) { return faces(n, q); },
                     [&](std::uint32_t link) { expandSourceScaled(link, P.centroid, farTerm, kernel, estimate, visibility, termScratch, valueScratch, row); },
@@ -388,8 +400,8 @@ void HierarchicalSolver::buildPatchRows() {
                             centre += weights[i] * points[i];
                         }
                     centre /= below;
-                    const auto estimate = [&, below](ElementIndex source, const PatchPolygon& q) {
-                        return below * kernelAt(centre, n, q, sourceRules_[source]);
+                    const auto estimate = [&, below](ElementIndex, const PatchPolygon& q) {
+                        return below * centroidKernel(centre, n, q);
                     };
                     // gatherTerms' test for a link all of whose rays were blocked, at each point below.
                     const auto brightHidden = [&, mask = mask](const Link& link) {
