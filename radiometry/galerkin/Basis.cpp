@@ -1,6 +1,7 @@
 #include "radiometry/galerkin/Basis.h"
 
 #include <cmath>
+#include <string>
 
 #include <glm/geometric.hpp>
 
@@ -26,7 +27,10 @@ double quadJacobian(const PatchPolygon& quad, ElementParameter at) {
 } // namespace
 
 ElementShape shapeOf(const PatchPolygon& element) {
-    RADIANT_CHECK_OP(element.count == 3 || element.count == 4, ==, true);
+    // Elements are ElementTree's triangles and quads; anything else is a bug in the caller.
+    if (element.count != 3 && element.count != 4)
+        throw InvariantError(std::string(__FILE__) + ": shapeOf: an element with " + std::to_string(element.count) +
+                             " corners (3 or 4 expected), area " + std::to_string(element.area) + " m^2");
     return element.count == 4 ? ElementShape::Quad : ElementShape::Triangle;
 }
 

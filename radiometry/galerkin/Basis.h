@@ -21,7 +21,7 @@
 //                               in barycentrics: mean 0, variance 1, uncorrelated].
 // On a triangle and on a parallelogram quad the area density is constant, so this is the normalised
 // AREA measure and the basis is orthonormal in it. On a general planar quad (a trapezoid: the Cornell
-// box's floor root is one to 0.6%) the area density J(u, v) / A is linear in u and v and the two
+// box's floor is one, to 0.6%) the area density J(u, v) / A is linear in u and v and the two
 // measures differ by it; the parametric choice keeps the two-scale filters exact and the same for
 // every element (ElementTree's children are the parent map restricted to the four parameter quarters),
 // and since J is itself in the span of the basis, pull still conserves the area-weighted mean (the

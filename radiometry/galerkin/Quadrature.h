@@ -35,7 +35,7 @@ using QuadratureRule = std::vector<QuadratureNode>;
 
 /// The basis coefficients of f by the rule (c_k = sum_q w_q f(at_q) phi_k(at_q)): the L2 projection
 /// in the parametric measure, exact when f times the basis is integrated exactly by the rule (for a
-/// polynomial f of the basis's degree, elementRule level 2 on a quad, level 3 on a triangle).
+/// polynomial f of the basis's degree, elementRule level 2 on either shape).
 template <class Function>
 [[nodiscard]] BasisCoefficients projectOntoBasis(ElementShape shape, const QuadratureRule& rule, Function&& f) {
     BasisCoefficients c{};
