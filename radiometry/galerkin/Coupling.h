@@ -14,8 +14,10 @@
 // Then K_00 = F(r -> s), the form factor from receiver to source, and for a source radiosity
 // B(y) = sum_j b_j phi_j(y) the irradiance H(x) = int_s G V B dA_y gathered over the receiver has the
 // moments (1 / A_r) int_r phi_i H dA = sum_j K_ij b_j: the receiver's coefficients of H on triangles
-// and parallelograms (orthonormal in the area measure there), and its parametric coefficients to the
-// first order of the area density's variation on a general quad (Basis.h). Reciprocity:
+// and parallelograms (orthonormal in the area measure there); on a general quad they differ from H's
+// parametric coefficients by terms of the size of the area density's variation (Basis.h; 0.6% across
+// the Cornell floor, halving with each split), which the Gram matrix of that linear density would
+// remove exactly if a solver needs it. Reciprocity:
 // A_r K_ij(r, s) = A_s K_ji(s, r), exactly, for the same rules.
 //
 // Quadrature: the integrand is smooth where the elements are far apart for their size; where they
