@@ -4,12 +4,14 @@
 // and pull conserves power (the area-weighted mean) even on a trapezoid.
 #include <doctest/doctest.h>
 
+#include <cmath>
 #include <random>
 
 #include "radiometry/galerkin/Basis.h"
 #include "radiometry/galerkin/Quadrature.h"
 #include "radiometry/galerkin/TwoScale.h"
 #include "radiometry/mesh/ElementTree.h"
+#include "radiometry/scene/BuiltinScenes.h"
 
 #include "tests/support/GalerkinElements.h"
 #include "tests/support/Relative.h"
@@ -55,6 +57,39 @@ TEST_CASE("galerkin: childToParent is where ElementTree's split puts each child"
                       1e-14);
             }
     }
+}
+
+TEST_CASE("galerkin: ElementTree's children, by index, are the parameter pieces childToParent names") {
+    // The solver will push and pull by child index (firstChild + c): the tree's own children must be
+    // the pieces in the order TwoScale assumes, for the Cornell box's quads and triangles, two levels down.
+    ElementTree tree(makeCornellBox());
+    bool sawQuad = false, sawTriangle = false;
+    const std::size_t rootCount = tree.roots().size();
+    for (std::size_t r = 0; r < rootCount; ++r) {
+        const ElementIndex root = tree.roots()[r];
+        const ElementIndex first = tree.subdivide(root);
+        tree.subdivide(first + 2);
+    }
+    for (ElementIndex e = 0; e < tree.size(); ++e) {
+        if (tree.isLeaf(e)) continue;
+        const PatchPolygon& parent = tree.polygon(e);
+        const ElementShape shape = shapeOf(parent);
+        (shape == ElementShape::Quad ? sawQuad : sawTriangle) = true;
+        // Each child's corners at its own parameter corners, (0,0), (1,0), (1,1), (0,1) or (0,0), (1,0), (0,1).
+        constexpr ElementParameter quadCorners[] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+        constexpr ElementParameter triangleCorners[] = {{0, 0}, {1, 0}, {0, 1}};
+        for (std::size_t c = 0; c < kChildCount; ++c) {
+            const PatchPolygon& child = tree.polygon(tree.firstChild(e) + static_cast<ElementIndex>(c));
+            for (std::size_t k = 0; k < child.count; ++k) {
+                const ElementParameter corner = shape == ElementShape::Quad ? quadCorners[k] : triangleCorners[k];
+                INFO("element " << e << ", child " << c << ", corner " << k);
+                CHECK(glm::length(child.vertices[k] - pointAt(parent, childToParent(shape, c, corner))) <
+                      1e-12 * std::sqrt(parent.area));
+            }
+        }
+    }
+    CHECK(sawQuad);
+    CHECK(sawTriangle);
 }
 
 TEST_CASE("galerkin: push is exact: each child's function is the parent's, point for point") {
