@@ -13,11 +13,11 @@
 //    matrix holds, not as {0, 1/2, 1} from 2-4 rays (the light source shoots once, so its few-ray
 //    noise never averages out); weak shots cast 2-16, and the many of them average.
 //  - for a group, the kernel weighs each member by its share of the shot's power in each band, and
-//    each visibility ray by what its member sends to the receiver in each band: the light leaves from
-//    where it is and in the colour it has there (a block of floor half in the lamp's light, half in
-//    the red wall's, sends its red from one half), and a receiver beside the group does not count
-//    rays to members beyond its horizon as shadowed; where a receiver's rays to a group disagree, its
-//    visibility is resolved per member (perMemberVisibility). The rays are drawn by the band sum.
+//    each visibility ray by what its member sends to the receiver: the light leaves from where it
+//    is and in the colour it has there (a block of floor half in the lamp's light, half in the red
+//    wall's, sends its red from one half), and a receiver beside the group does not count rays to
+//    members beyond its horizon as shadowed; where a receiver's rays to a group disagree, its
+//    visibility is resolved per member and per band (perMemberVisibility).
 // F_{j->s} comes out directly, so no reciprocity division by a small receiver's area.
 #include <algorithm>
 #include <array>
@@ -252,17 +252,9 @@ private:
 /// the patch's own face, which no ray from its plane can hit (a closed double-sided sphere's inside
 /// was lit so, 0.75% of its outside; 0.15% left, from pairs where no ray of the many faces). Returns
 /// -1 when no ray joined facing parts, with the plain fraction of all rays in `plain`.
-/// A visibility fraction as each band sees it (`band`) and as the band sum weighs it (`all`): a group's
-/// members differ in colour (the floor before a block lit orange by the lamp beside its red-lit
-/// shadow), so the light of each band arrives from its own members.
-struct Visibility {
-    double all = 0;
-    Rgb band{0.0};
-};
-
-Visibility stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver,
-                                const glm::dvec3& shooterNormal, int rays, std::uint64_t seed,
-                                std::span<const double> memberWeight, std::span<const Rgb> bandWeight, double& plain) {
+double stratifiedVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t receiver,
+                            const glm::dvec3& shooterNormal, int rays, std::uint64_t seed,
+                            std::span<const double> memberWeight, double& plain) {
     const auto count = static_cast<std::uint64_t>(targets.points.size());
     const auto n = static_cast<std::uint64_t>(rays);
     const std::uint64_t spacing = std::max<std::uint64_t>(1, count / n);
@@ -270,7 +262,6 @@ Visibility stratifiedVisibility(const ShotGeometry& g, const ShotTargets& target
     const std::uint64_t stride = coprimeStride(mix64(seed + 2), n);
     StratifiedOrigins origins(g.polygons[receiver], rays, mix64(seed + 3));
     double unblocked = 0, total = 0, unblockedBehind = 0, totalBehind = 0;
-    Rgb bandUnblocked(0.0), bandTotal(0.0);
     for (std::uint64_t k = 0; k < n; ++k) {
         const std::uint64_t t = (first + ((stride * k) % n) * spacing) % count;
         const glm::dvec3 from = origins.next();
@@ -282,21 +273,11 @@ Visibility stratifiedVisibility(const ShotGeometry& g, const ShotTargets& target
         const bool through = !g.rays->occluded(from, targets.points[t]);
         (facing ? total : totalBehind) += weight;
         if (through) (facing ? unblocked : unblockedBehind) += weight;
-        if (facing && !bandWeight.empty()) {
-            bandTotal += bandWeight[targets.member[t]];
-            if (through) bandUnblocked += bandWeight[targets.member[t]];
-        }
     }
-    if (total > 0) {
-        Visibility v{unblocked / total, Rgb(unblocked / total)};
-        // A band none of whose members this receiver's rays reached keeps the band sum's fraction.
-        for (int b = 0; b < 3; ++b)
-            if (!bandWeight.empty() && bandTotal[b] > 0) v.band[b] = bandUnblocked[b] / bandTotal[b];
-        return v;
-    }
+    if (total > 0) return unblocked / total;
     // No ray joined parts in front of each other (a sliver of the pair): -1, with the plain fraction.
     plain = totalBehind > 0 ? unblockedBehind / totalBehind : 0.0;
-    return {-1, Rgb(-1.0)};
+    return -1;
 }
 
 /// Area-to-area visibility between the receiver and the shot's targets. A strong shot (the full
@@ -307,30 +288,26 @@ Visibility stratifiedVisibility(const ShotGeometry& g, const ShotTargets& target
 /// v^n + (1 - v^n - (1-v)^n) v' for the second pass's v': 3v^2 - 2v^3 for n = 2; with 16
 /// stratified rays a receiver that sees a sliver of the light stays dark). Weaker shots cast their
 /// fixed few rays, unbiased, and are averaged by the many shots after them.
-Visibility shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, const glm::dvec3& shooterNormal,
-                          std::size_t receiver, int fewRays, int penumbraRays, std::span<const double> memberWeight,
-                          std::span<const Rgb> bandWeight) {
+double shotVisibility(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, const glm::dvec3& shooterNormal,
+                      std::size_t receiver, int fewRays, int penumbraRays, std::span<const double> memberWeight) {
     const std::uint64_t seed = pairSeed(g.options.seed, shooter, receiver);
     double plain = 0;
-    const Visibility first =
-        stratifiedVisibility(g, targets, receiver, shooterNormal, fewRays, seed, memberWeight, bandWeight, plain);
+    const double first = stratifiedVisibility(g, targets, receiver, shooterNormal, fewRays, seed, memberWeight, plain);
     const bool more = penumbraRays > fewRays;
-    if (first.all < 0) {  // none of the few rays weighed: the many find the facing parts, else the plain fraction
-        if (!more) return {plain, Rgb(plain)};
-        const Visibility again = stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays,
-                                                      mix64(seed ^ 0x5bd1e995ULL), memberWeight, bandWeight, plain);
-        return again.all >= 0 ? again : Visibility{plain, Rgb(plain)};
+    if (first < 0) {  // none of the few rays weighed: the many find the facing parts, else the plain fraction
+        if (!more) return plain;
+        const double again =
+            stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, plain);
+        return again >= 0 ? again : plain;
     }
     // Whatever the first pass saw (see above: on the Cornell box stopping where it agreed left floor
     // patches in the short block's penumbra 25-30% dark at every seed).
     if (fewRays < g.options.visibilityRays || !more) return first;
     double unused = 0;
-    Visibility second = stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL),
-                                             memberWeight, bandWeight, unused);
-    if (second.all < 0) second = first;
-    const double total = fewRays + penumbraRays;
-    return {(first.all * fewRays + second.all * penumbraRays) / total,
-            (first.band * static_cast<double>(fewRays) + second.band * static_cast<double>(penumbraRays)) / total};
+    double second =
+        stratifiedVisibility(g, targets, receiver, shooterNormal, penumbraRays, mix64(seed ^ 0x5bd1e995ULL), memberWeight, unused);
+    if (second < 0) second = first;
+    return (first * fewRays + second * penumbraRays) / (fewRays + penumbraRays);
 }
 
 /// The kernel rule for a receiver whose gap to a polygon is at least `lowerBound` (m): the exact gap
@@ -351,20 +328,16 @@ const ReceiverRule& ruleFor(const PatchPolygon& receiver, const PatchPolygon& so
 /// to its area; a block whose light sits on its near half (floor beside a box, the lit half of a
 /// block's side) is otherwise lit as though its light sat at its centre (with the rays below, up to
 /// 8.5% per surface and 51% per patch against Gauss-Seidel on the Cornell box at blocks of 3-4).
-/// Per band: each band's light leaves from where that band's power is (bandShare), and the ray
-/// weights of each band (bandWeight) are the kernel times that band's share over the band sum's,
-/// the rays being drawn by the band sum.
+/// Per band: each band's light leaves from where that band's power is (bandShare).
 Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, std::span<const double> memberShare,
-                       std::span<const Rgb> bandShare, std::vector<double>& memberWeight, std::vector<Rgb>& bandWeight) {
+                       std::span<const Rgb> bandShare, std::vector<double>& memberWeight) {
     const PatchPolygon& s = g.shooters[shooter];
     const PatchPolygon& r = g.polygons[receiver];
     const auto members = g.groups.group(shooter);
     memberWeight.clear();
-    bandWeight.clear();
     if (memberShare.empty() || members.size() == 1)
         return Rgb(receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter])));
     memberWeight.assign(members.size(), 0.0);
-    bandWeight.assign(members.size(), Rgb(0.0));
     // The outline's exact kernel averaged over the receiver, scaled by how the kernel from the
     // receiver's centroid to each member weighs the power against the area: a uniform group gets the
     // outline's kernel exactly, the kernel's own errors (the centroid for the receiver, a member's
@@ -386,7 +359,6 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
             kernel = pointToPolygonFormFactor(r.centroid, r.normal, m.corners()) / m.area;
         }
         memberWeight[k] = kernel;
-        if (memberShare[k] > 0) bandWeight[k] = kernel / memberShare[k] * bandShare[k];
         byPower += bandShare[k] * kernel;
         byArea += m.area / s.area * kernel;
     }
@@ -399,7 +371,6 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
         const PatchPolygon& m = g.polygons[members[k]];
         const double lowerBound = glm::length(r.centroid - m.centroid) - g.patchRadius[members[k]];
         memberWeight[k] = receiverAverage(r, m, ruleFor(r, m, lowerBound)) / m.area;
-        bandWeight[k] = memberWeight[k] / memberShare[k] * bandShare[k];
         sum += bandShare[k] * memberWeight[k];
     }
     return sum * s.area;
@@ -551,18 +522,18 @@ Rgb receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std::si
     if ((g.shooterSurface[shooter] == pr.surface && g.shooterFace[shooter] == pr.face) || cannotSeeEachOther(s, r))
         return Rgb(0.0);
     thread_local std::vector<double> memberWeight;
-    thread_local std::vector<Rgb> bandWeight;
-    const Rgb unoccluded = unoccludedFromShot(g, shooter, receiver, memberShare, bandShare, memberWeight, bandWeight);
+    const Rgb unoccluded = unoccludedFromShot(g, shooter, receiver, memberShare, bandShare, memberWeight);
     if (!(unoccluded.x + unoccluded.y + unoccluded.z > 0) || g.options.visibilityRays <= 0) return unoccluded;
     const int fewRays = fewRaysFor(g, penumbraRays);
-    const Visibility shot =
-        shotVisibility(g, targets, shooter, s.normal, receiver, fewRays, penumbraRays, memberWeight, bandWeight);
-    Rgb visibility = shot.band;
+    const double shot = shotVisibility(g, targets, shooter, s.normal, receiver, fewRays, penumbraRays, memberWeight);
+    Rgb visibility(shot);
     // Only where the shot's rays disagreed, so a receiver that sees the whole group, or none of it,
     // costs nothing more; there the shot's visibility is resolved per member with as many rays
     // again as the receiver just cast (twice that was no better on the Cornell box: 0.72-0.74% off
-    // Gauss-Seidel per patch against 0.78%, at +20% CPU against +10%).
-    if (shot.all > 0 && shot.all < 1 && !memberWeight.empty()) {
+    // Gauss-Seidel per patch against 0.78%, at +20% CPU against +10%), and per band. Where the rays
+    // agree every band sees the group alike (all or none of it), so the rays above are not weighed
+    // per band.
+    if (shot > 0 && shot < 1 && !memberWeight.empty()) {
         const int cast = fewRays < g.options.visibilityRays || penumbraRays <= fewRays ? fewRays : fewRays + penumbraRays;
         visibility = perMemberVisibility(g, shooter, receiver, memberShare, bandShare, memberWeight, cast, visibility);
     }
@@ -595,7 +566,7 @@ double receiverToPatchGroup(const ShotGeometry& g, const ShotTargets& targets, s
     }
     if (unoccluded <= 0 || g.options.visibilityRays <= 0) return unoccluded;
     return unoccluded * shotVisibility(g, targets, group, glm::dvec3(0.0), receiver, fewRaysFor(g, penumbraRays),
-                                       penumbraRays, memberWeight, {}).all;
+                                       penumbraRays, memberWeight);
 }
 
 /// Each member's share of the shot's power (of the group's area when no power is given, or none
