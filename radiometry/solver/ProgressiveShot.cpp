@@ -12,10 +12,12 @@
 //    receiver, so a shadow's edge comes out as the same area-to-area fraction Gauss-Seidel's
 //    matrix holds, not as {0, 1/2, 1} from 2-4 rays (the light source shoots once, so its few-ray
 //    noise never averages out); weak shots cast 2-16, and the many of them average.
-//  - for a group, the kernel weighs each member by its share of the shot's power, and each visibility
-//    ray by what its member sends to the receiver: the light leaves from where it is, and a receiver
-//    beside the group does not count rays to members beyond its horizon as shadowed; where a
-//    receiver's rays to a group disagree, its visibility is resolved per member (perMemberVisibility).
+//  - for a group, the kernel weighs each member by its share of the shot's power in each band, and
+//    each visibility ray by what its member sends to the receiver: the light leaves from where it
+//    is and in the colour it has there (a block of floor half in the lamp's light, half in the red
+//    wall's, sends its red from one half), and a receiver beside the group does not count rays to
+//    members beyond its horizon as shadowed; where a receiver's rays to a group disagree, its
+//    visibility is resolved per member and per band (perMemberVisibility).
 // F_{j->s} comes out directly, so no reciprocity division by a small receiver's area.
 #include <algorithm>
 #include <array>
@@ -25,9 +27,11 @@
 #include <numbers>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
@@ -324,14 +328,15 @@ const ReceiverRule& ruleFor(const PatchPolygon& receiver, const PatchPolygon& so
 /// to its area; a block whose light sits on its near half (floor beside a box, the lit half of a
 /// block's side) is otherwise lit as though its light sat at its centre (with the rays below, up to
 /// 8.5% per surface and 51% per patch against Gauss-Seidel on the Cornell box at blocks of 3-4).
-double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t receiver,
-                          std::span<const double> memberShare, std::vector<double>& memberWeight) {
+/// Per band: each band's light leaves from where that band's power is (bandShare).
+Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, std::span<const double> memberShare,
+                       std::span<const Rgb> bandShare, std::vector<double>& memberWeight) {
     const PatchPolygon& s = g.shooters[shooter];
     const PatchPolygon& r = g.polygons[receiver];
     const auto members = g.groups.group(shooter);
     memberWeight.clear();
     if (memberShare.empty() || members.size() == 1)
-        return receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter]));
+        return Rgb(receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter])));
     memberWeight.assign(members.size(), 0.0);
     // The outline's exact kernel averaged over the receiver, scaled by how the kernel from the
     // receiver's centroid to each member weighs the power against the area: a uniform group gets the
@@ -340,7 +345,8 @@ double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_
     // variation across the group, and a shot costs a few flops per member beyond the few near ones
     // (an exact contour integral per member and Gauss point made a shot ~10x slower).
     const double groupGap = glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter];
-    double byPower = 0, byArea = 0;
+    double byArea = 0;
+    Rgb byPower(0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         const PatchPolygon& m = g.polygons[members[k]];
         const glm::dvec3 d = m.centroid - r.centroid;
@@ -353,19 +359,19 @@ double unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_
             kernel = pointToPolygonFormFactor(r.centroid, r.normal, m.corners()) / m.area;
         }
         memberWeight[k] = kernel;
-        byPower += memberShare[k] * kernel;
+        byPower += bandShare[k] * kernel;
         byArea += m.area / s.area * kernel;
     }
     if (byArea > 0) return receiverAverage(r, s, ruleFor(r, s, groupGap)) * byPower / byArea;
     // The receiver's centroid sees none of the group's members (but its Gauss points may): each
     // member's kernel averaged over the receiver.
-    double sum = 0;
+    Rgb sum(0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         if (memberShare[k] <= 0) continue;
         const PatchPolygon& m = g.polygons[members[k]];
         const double lowerBound = glm::length(r.centroid - m.centroid) - g.patchRadius[members[k]];
         memberWeight[k] = receiverAverage(r, m, ruleFor(r, m, lowerBound)) / m.area;
-        sum += memberShare[k] * memberWeight[k];
+        sum += bandShare[k] * memberWeight[k];
     }
     return sum * s.area;
 }
@@ -394,35 +400,55 @@ int penumbraRaysFor(const ShotTargets& targets, double powerShare) {
 /// carry most of the light get few of the rays. The unoccluded form factor, and so the power that
 /// leaves the group, is untouched; only the fraction of it that arrives changes. A member no
 /// segment reaches facing drops out of the sum. Returns `fallback` where no member does.
-double perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t receiver,
-                           std::span<const double> memberShare, std::span<const double> memberWeight, int rays,
-                           double fallback) {
+/// Per band, the same members' fractions weighed by that band's shares (the rays follow the band sum).
+Rgb perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, std::span<const double> memberShare,
+                        std::span<const Rgb> bandShare, std::span<const double> memberWeight, int rays, const Rgb& fallback) {
     const auto members = g.groups.group(shooter);
     double total = 0;
-    for (std::size_t k = 0; k < members.size(); ++k) total += memberShare[k] * memberWeight[k];
+    Rgb bandTotal(0.0);
+    for (std::size_t k = 0; k < members.size(); ++k) {
+        total += memberShare[k] * memberWeight[k];
+        bandTotal += bandShare[k] * memberWeight[k];
+    }
     if (!(total > 0)) return fallback;
     const PatchPolygon& r = g.polygons[receiver];
     const std::uint64_t seed = pairSeed(g.options.seed ^ 0x9e3779b97f4a7c15ULL, shooter * 1000003ULL + g.timesShot[shooter], receiver);
     thread_local std::vector<glm::dvec3> to;
-    double sum = 0, counted = 0;
+    Rgb sum(0.0), counted(0.0);
+    // Member k's weight in each band, p_k per band (0 where the band holds no power).
+    const auto bandP = [&](std::size_t k) {
+        Rgb p(0.0);
+        for (int b = 0; b < 3; ++b)
+            if (bandTotal[b] > 0) p[b] = bandShare[k][b] * memberWeight[k] / bandTotal[b];
+        return p;
+    };
     // The unblocked fraction of n segments from stratified points of the receiver to the points `at`
     // gives, visited in a stride order so the receiver's u stratum and the target's are not paired;
     // -1 when none joins facing parts.
-    const auto fraction = [&](int n, std::uint64_t pairsSeed, const auto& at) {
+    // Each segment also counts in each band by the weight `at` gives it (its member's p in the band
+    // over its p: the pooled segments are drawn by the band sum), the bands' fractions in `band`.
+    const auto fraction = [&](int n, std::uint64_t pairsSeed, const auto& at, Rgb& band) {
         StratifiedOrigins fromPoints(r, n, pairsSeed);
         const auto count = static_cast<std::uint64_t>(n);
         const std::uint64_t stride = coprimeStride(mix64(pairsSeed + 2), count);
         const std::uint64_t offset = mix64(pairsSeed + 3) % count;
         int facing = 0, through = 0;
+        Rgb bandFacing(0.0), bandThrough(0.0);
         for (std::uint64_t i = 0; i < count; ++i) {
             const glm::dvec3 from = fromPoints.next();
-            const auto [target, normal] = at((stride * i + offset) % count);
+            const auto [target, normal, weight] = at((stride * i + offset) % count);
             const glm::dvec3 d = target - from;
             if (!(glm::dot(r.normal, d) > 0 && glm::dot(normal, d) < 0)) continue;
             ++facing;
-            if (!g.rays->occluded(from, target)) ++through;
+            bandFacing += weight;
+            if (!g.rays->occluded(from, target)) {
+                ++through;
+                bandThrough += weight;
+            }
         }
-        return facing > 0 ? static_cast<double>(through) / facing : -1.0;
+        const double v = facing > 0 ? static_cast<double>(through) / facing : -1.0;
+        for (int b = 0; b < 3; ++b) band[b] = bandFacing[b] > 0 ? bandThrough[b] / bandFacing[b] : v;
+        return v;
     };
     // Members that would get a ray or more have their own; the rest share ceil(rays x their sum)
     // rays spread over them by p_k (one ray each for every member cost +60% of the Cornell box's solve).
@@ -431,11 +457,13 @@ double perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size
     pooled.clear();
     pooledMember.clear();
     double pool = 0;
+    Rgb bandPool(0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         const double p = memberShare[k] * memberWeight[k] / total;
         if (!(p > 0)) continue;
         if (rays * p < 1) {
             pool += p;
+            bandPool += bandP(k);
             pooled.push_back(pool);
             pooledMember.push_back(static_cast<std::uint32_t>(k));
             continue;
@@ -446,54 +474,68 @@ double perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size
         StratifiedOrigins toPoints(m, n, mix64(memberSeed + 1));
         to.clear();
         for (int i = 0; i < n; ++i) to.push_back(toPoints.next());
-        const double v = fraction(n, memberSeed, [&](std::uint64_t i) { return std::pair{to[i], m.normal}; });
+        Rgb unused(0.0);
+        const double v =
+            fraction(n, memberSeed, [&](std::uint64_t i) { return std::tuple{to[i], m.normal, Rgb(1.0)}; }, unused);
         if (v < 0) continue;
-        sum += p * v;
-        counted += p;
+        sum += bandP(k) * v;
+        counted += bandP(k);
     }
     if (pool > 0) {
         const int n = std::max(1, static_cast<int>(std::ceil(rays * pool)));
         std::uint64_t state = mix64(seed + 4 * members.size());
         to.clear();
         thread_local std::vector<glm::dvec3> normals;
+        thread_local std::vector<Rgb> weights;
         normals.clear();
+        weights.clear();
         for (int i = 0; i < n; ++i) {  // stratified over the pooled members' cumulative p
             const double at = (i + nextUniform(state)) / n * pool;
             const std::size_t j = std::min<std::size_t>(
                 pooled.size() - 1, static_cast<std::size_t>(std::upper_bound(pooled.begin(), pooled.end(), at) - pooled.begin()));
-            const PatchPolygon& m = g.polygons[members[pooledMember[j]]];
+            const std::uint32_t k = pooledMember[j];
+            const PatchPolygon& m = g.polygons[members[k]];
             to.push_back(pointOn(m, nextUniform(state), nextUniform(state)));
             normals.push_back(m.normal);
+            weights.push_back(bandP(k) / (memberShare[k] * memberWeight[k] / total));
         }
-        const double v = fraction(n, mix64(state), [&](std::uint64_t i) { return std::pair{to[i], normals[i]}; });
+        Rgb band(0.0);
+        const double v = fraction(
+            n, mix64(state), [&](std::uint64_t i) { return std::tuple{to[i], normals[i], weights[i]}; }, band);
         if (v >= 0) {
-            sum += pool * v;
-            counted += pool;
+            sum += bandPool * band;
+            counted += bandPool;
         }
     }
-    return counted > 0 ? sum / counted : fallback;
+    Rgb visibility = fallback;
+    for (int b = 0; b < 3; ++b)
+        if (counted[b] > 0) visibility[b] = sum[b] / counted[b];
+    return visibility;
 }
 
-double receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
-                         std::span<const double> memberShare, int penumbraRays) {
+Rgb receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std::size_t shooter, std::size_t receiver,
+                      std::span<const double> memberShare, std::span<const Rgb> bandShare, int penumbraRays) {
     const PatchPolygon& s = g.shooters[shooter];
     const PatchPolygon& r = g.polygons[receiver];
     const Patch& pr = g.patches[receiver];
     // A shooter's own patches lie on its face, as do their coplanar neighbours: no exchange.
     if ((g.shooterSurface[shooter] == pr.surface && g.shooterFace[shooter] == pr.face) || cannotSeeEachOther(s, r))
-        return 0;
+        return Rgb(0.0);
     thread_local std::vector<double> memberWeight;
-    const double unoccluded = unoccludedFromShot(g, shooter, receiver, memberShare, memberWeight);
-    if (unoccluded <= 0 || g.options.visibilityRays <= 0) return unoccluded;
+    const Rgb unoccluded = unoccludedFromShot(g, shooter, receiver, memberShare, bandShare, memberWeight);
+    if (!(unoccluded.x + unoccluded.y + unoccluded.z > 0) || g.options.visibilityRays <= 0) return unoccluded;
     const int fewRays = fewRaysFor(g, penumbraRays);
-    double visibility = shotVisibility(g, targets, shooter, s.normal, receiver, fewRays, penumbraRays, memberWeight);
+    const double shot = shotVisibility(g, targets, shooter, s.normal, receiver, fewRays, penumbraRays, memberWeight);
+    Rgb visibility(shot);
     // Only where the shot's rays disagreed, so a receiver that sees the whole group, or none of it,
     // costs nothing more; there the shot's visibility is resolved per member with as many rays
     // again as the receiver just cast (twice that was no better on the Cornell box: 0.72-0.74% off
-    // Gauss-Seidel per patch against 0.78%, at +20% CPU against +10%).
-    if (visibility > 0 && visibility < 1 && !memberWeight.empty()) {
+    // Gauss-Seidel per patch against 0.78%, at +20% CPU against +10%), and per band. Where the rays
+    // agree every band sees the group alike (all or none of it), so the rays above are not weighed
+    // per band.
+    if (shot > 0 && shot < 1 && !memberWeight.empty()) {
         const int cast = fewRays < g.options.visibilityRays || penumbraRays <= fewRays ? fewRays : fewRays + penumbraRays;
-        visibility = perMemberVisibility(g, shooter, receiver, memberShare, memberWeight, cast, visibility);
+        visibility = perMemberVisibility(g, shooter, receiver, memberShare, bandShare, memberWeight, cast, visibility);
     }
     return unoccluded * visibility;
 }
@@ -541,6 +583,25 @@ std::vector<double> memberShares(const ShotGeometry& g, std::size_t shooter, std
     return share;
 }
 
+/// The same per band: member k's share of the band's power; a band with none takes the band
+/// sum's shares (`share`), as its light is nil anyway.
+std::vector<Rgb> memberBandShares(std::span<const Rgb> memberPower, std::span<const double> share) {
+    if (share.empty()) return {};
+    Rgb total(0.0);
+    if (memberPower.size() == share.size())
+        for (const Rgb& w : memberPower) total += glm::max(w, Rgb(0.0));
+    std::vector<Rgb> band(share.size());
+    for (std::size_t k = 0; k < share.size(); ++k)
+        for (int b = 0; b < 3; ++b) band[k][b] = total[b] > 0 ? std::max(0.0, memberPower[k][b]) / total[b] : share[k];
+    return band;
+}
+
+std::vector<double> bandSums(std::span<const Rgb> memberPower) {
+    std::vector<double> sums(memberPower.size());
+    for (std::size_t k = 0; k < sums.size(); ++k) sums[k] = memberPower[k].x + memberPower[k].y + memberPower[k].z;
+    return sums;
+}
+
 } // namespace
 
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options) {
@@ -550,8 +611,11 @@ ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& 
 ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& mesh,
                                            const ProgressiveShooters& shooters, const SolverOptions& options) {
     GroupShotFormFactors byPower = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
-    return [byPower = std::move(byPower)](std::size_t shooter, std::span<double> toShooter) {
-        byPower(shooter, {}, 1.0, toShooter);
+    auto bands = std::make_shared<std::vector<Rgb>>();  // called from one thread at a time
+    return [byPower = std::move(byPower), bands](std::size_t shooter, std::span<double> toShooter) {
+        bands->resize(toShooter.size());
+        byPower(shooter, {}, 1.0, *bands);  // without power every band leaves by area alike
+        for (std::size_t j = 0; j < toShooter.size(); ++j) toShooter[j] = (*bands)[j].x;
     };
 }
 
@@ -576,14 +640,15 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
-    return [geometry](std::size_t shooter, std::span<const double> memberPower, double powerShare,
-                      std::span<double> toShooter) {
-        const ShotTargets targets = shotTargets(*geometry, shooter, memberPower, powerShare);
-        const std::vector<double> share = memberShares(*geometry, shooter, memberPower);
+    return [geometry](std::size_t shooter, std::span<const Rgb> memberPower, double powerShare, std::span<Rgb> toShooter) {
+        const std::vector<double> power = bandSums(memberPower);
+        const ShotTargets targets = shotTargets(*geometry, shooter, power, powerShare);
+        const std::vector<double> share = memberShares(*geometry, shooter, power);
+        const std::vector<Rgb> bandShare = memberBandShares(memberPower, share);
         const int penumbraRays = penumbraRaysFor(targets, powerShare);
         parallelFor(toShooter.size(), 256, [&](std::size_t begin, std::size_t end) {
             for (std::size_t j = begin; j < end; ++j)
-                toShooter[j] = receiverToShooter(*geometry, targets, shooter, j, share, penumbraRays);
+                toShooter[j] = receiverToShooter(*geometry, targets, shooter, j, share, bandShare, penumbraRays);
         });
     };
 }
@@ -615,30 +680,35 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
-    auto perPatch = std::make_shared<std::vector<double>>(mesh.size());
+    auto perPatch = std::make_shared<std::vector<Rgb>>(mesh.size());
     return [geometry, groups = std::move(groups), shooterGroups = shooters, perPatch](
-               std::size_t shooter, std::span<const double> memberPower, double powerShare, std::span<double> toShooter) {
+               std::size_t shooter, std::span<const Rgb> memberPower, double powerShare, std::span<Rgb> toShooter) {
         const ShotGeometry& g = *geometry;
-        std::vector<double>& f = *perPatch;
+        std::vector<Rgb>& f = *perPatch;
         if (g.shooters[shooter].count > 0) {
             // A planar block of groups (or one planar patch): the block kernel of the patch shooters,
             // each patch sending its group's share of the power spread over the group's area.
             const auto members = shooterGroups.group(shooter);
-            std::vector<double> patchPower;
+            std::vector<Rgb> patchPower;
             patchPower.reserve(g.groups.group(shooter).size());
             double total = 0;
             for (std::size_t k = 0; k < members.size(); ++k)
-                total += memberPower.size() == members.size() ? std::max(0.0, memberPower[k]) : 0.0;
+                if (memberPower.size() == members.size())
+                    for (int b = 0; b < 3; ++b) total += std::max(0.0, memberPower[k][b]);
             for (std::size_t k = 0; k < members.size(); ++k) {
-                const double groupShare = total > 0 ? std::max(0.0, memberPower[k]) / total : groups->area[members[k]];
+                const Rgb groupShare =
+                    total > 0 ? glm::max(memberPower[k], Rgb(0.0)) / total : Rgb(groups->area[members[k]]);
                 for (const std::uint32_t p : groups->patchesOf(members[k]))
-                    patchPower.push_back(groupShare * g.patches[p].area / groups->area[members[k]]);
+                    patchPower.push_back(groupShare * (g.patches[p].area / groups->area[members[k]]));
             }
-            const ShotTargets targets = shotTargets(*geometry, shooter, patchPower, powerShare);
-            const std::vector<double> share = memberShares(g, shooter, patchPower);
+            const std::vector<double> power = bandSums(patchPower);
+            const ShotTargets targets = shotTargets(*geometry, shooter, power, powerShare);
+            const std::vector<double> share = memberShares(g, shooter, power);
+            const std::vector<Rgb> bandShare = memberBandShares(patchPower, share);
             const int penumbraRays = penumbraRaysFor(targets, powerShare);
             parallelFor(f.size(), 256, [&](std::size_t begin, std::size_t end) {
-                for (std::size_t j = begin; j < end; ++j) f[j] = receiverToShooter(g, targets, shooter, j, share, penumbraRays);
+                for (std::size_t j = begin; j < end; ++j)
+                    f[j] = receiverToShooter(g, targets, shooter, j, share, bandShare, penumbraRays);
             });
         } else {
             // One group that is not planar: its radiosity is uniform, so its light leaves its
@@ -649,14 +719,14 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
             for (const std::uint32_t k : targets.member) targets.normal.push_back(g.polygons[members[k]].normal);
             const int penumbraRays = penumbraRaysFor(targets, powerShare);
             parallelFor(f.size(), 64, [&](std::size_t begin, std::size_t end) {
-                for (std::size_t j = begin; j < end; ++j) f[j] = receiverToPatchGroup(g, targets, shooter, j, penumbraRays);
+                for (std::size_t j = begin; j < end; ++j) f[j] = Rgb(receiverToPatchGroup(g, targets, shooter, j, penumbraRays));
             });
         }
         // A receiving group gathers its patches' light by area: F_{D->S} = sum_{q in D} A_q F_{q->S} / A_D.
-        std::fill(toShooter.begin(), toShooter.end(), 0.0);
+        std::fill(toShooter.begin(), toShooter.end(), Rgb(0.0));
         for (std::size_t q = 0; q < f.size(); ++q) toShooter[groups->groupOf[q]] += g.patches[q].area * f[q];
         for (std::size_t d = 0; d < toShooter.size(); ++d)
-            toShooter[d] = groups->area[d] > 0 ? toShooter[d] / groups->area[d] : 0.0;
+            toShooter[d] = groups->area[d] > 0 ? toShooter[d] / groups->area[d] : Rgb(0.0);
     };
 }
 

@@ -18,9 +18,11 @@ double bandSum(const Rgb& v) { return v.x + v.y + v.z; }
 
 ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors)
     : materials_(std::move(materials)),
-      formFactors_([f = std::move(formFactors)](std::size_t shooter, std::span<const double>, double,
-                                                std::span<double> out) {
-          f(shooter, out);
+      formFactors_([f = std::move(formFactors), column = std::make_shared<std::vector<double>>()](
+                       std::size_t shooter, std::span<const Rgb>, double, std::span<Rgb> out) {
+          column->resize(out.size());
+          f(shooter, *column);
+          for (std::size_t j = 0; j < out.size(); ++j) out[j] = Rgb((*column)[j]);
       }) {
     shooters_ = ProgressiveShooters::eachPatch(materials_.size());
     prepareShooters();
@@ -94,27 +96,28 @@ IterationStats ProgressiveSolver::step() {
     if (nextShooterPower_ > 0) {
         const std::size_t group = nextShooter_;
         lastGroup_ = static_cast<std::int64_t>(group);
-        // The group's mean unshot radiosity times F_{j -> group}, which weighs each member by its
-        // share of the power (ProgressiveShot.cpp): the light leaves from where it is.
+        // The group's mean unshot radiosity times F_{j -> group} per band, which weighs each member
+        // by its share of that band's power (ProgressiveShot.cpp): the light leaves from where it
+        // is, in the colour it has there.
         Rgb power(0.0);
         double brightest = -1;
         memberPower_.clear();
         for (const std::uint32_t i : shooters_.group(group)) {
             power += materials_.area[i] * unshot_[i];
             const double magnitude = materials_.area[i] * bandSum(glm::abs(unshot_[i]));
-            memberPower_.push_back(magnitude / nextShooterPower_);
+            memberPower_.push_back(materials_.area[i] * glm::abs(unshot_[i]) / nextShooterPower_);
             if (magnitude > brightest) {
                 brightest = magnitude;
                 stats_.shooter = static_cast<std::int64_t>(i);
             }
             unshot_[i] = Rgb(0.0);
         }
-        toShooter_.assign(materials_.size(), 0.0);
+        toShooter_.assign(materials_.size(), Rgb(0.0));
         const double emitted = bandSum(materials_.emittedPower());
         formFactors_(group, memberPower_, emitted > 0 ? nextShooterPower_ / emitted : 1.0, toShooter_);
         const Rgb shot = shooterArea_[group] > 0 ? power / shooterArea_[group] : Rgb(0.0);
         for (std::size_t j = 0; j < toShooter_.size(); ++j) {
-            if (toShooter_[j] == 0) continue;
+            if (toShooter_[j] == Rgb(0.0)) continue;
             const Rgb received = toShooter_[j] * shot;
             const Rgb reflected = materials_.reflectance[j] * received;
             irradiance_[j] += received;

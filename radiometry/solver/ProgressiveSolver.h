@@ -24,14 +24,16 @@ namespace radiant {
 /// itself and for patches that cannot see it. Called from one thread at a time. `shooter` is a
 /// patch index, or with ProgressiveShooters a group index and F_{j -> group} to the whole group.
 using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double> toShooter)>;
-/// ShotFormFactors for a group, told where in it the light leaves from: memberPower[k] >= 0 is the
-/// share of the shot's unshot power held by the group's k-th patch (they sum to 1), so visibility
-/// can be sampled where the light is, not over parts of the group that hold none (floor under a box).
+/// ShotFormFactors for a group, told where in it the light leaves from: memberPower[k] >= 0 per band
+/// is the share of the shot's unshot power held by the group's k-th patch in that band (all of them,
+/// over members and bands, sum to 1), so visibility can be sampled where the light is, not over parts
+/// of the group that hold none (floor under a box), and each band leaves from where that band's
+/// light is. toShooter[j] is F_{j -> group} per band, each band's power weighing the members.
 /// powerShare is the shot's unshot power as a fraction of the emitted power (band sums): a shot that
 /// carries much of the light (the light source's own) gets more visibility rays in penumbrae, since
 /// its noise is not averaged away by later shots.
-using GroupShotFormFactors = std::function<void(std::size_t group, std::span<const double> memberPower,
-                                                double powerShare, std::span<double> toShooter)>;
+using GroupShotFormFactors = std::function<void(std::size_t group, std::span<const Rgb> memberPower,
+                                                double powerShare, std::span<Rgb> toShooter)>;
 
 class ProgressiveSolver final : public Solver {
 public:
@@ -77,12 +79,12 @@ private:
     PatchMaterials materials_;
     ProgressiveShooters shooters_;
     GroupShotFormFactors formFactors_;
-    std::vector<double> memberPower_;
+    std::vector<Rgb> memberPower_;
     std::vector<double> shooterArea_;  ///< m^2 per group
     std::vector<Rgb> radiosity_;   ///< B = E + rho H, W/m^2
     std::vector<Rgb> unshot_;      ///< W/m^2
     std::vector<Rgb> irradiance_;  ///< H: everything gathered so far, W/m^2; survives material edits
-    std::vector<double> toShooter_;
+    std::vector<Rgb> toShooter_;
     std::size_t nextShooter_ = 0;  ///< a group
     double nextShooterPower_ = 0;  ///< sum over its patches of A |unshot B| summed over bands, W
     std::int64_t lastGroup_ = -1;

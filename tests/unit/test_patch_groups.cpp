@@ -119,10 +119,11 @@ void checkProgressiveFurnace(const Scene& scene, const PatchMesh& mesh, std::sha
     const ProgressiveShooters shooters = groupShooters(mesh, *groups, 1);
     REQUIRE(shooters.size() == groups->size());
     const GroupShotFormFactors shot = makeRayCastPatchGroupShotFormFactors(scene, mesh, groups, shooters, options);
-    std::vector<double> rowSum(groups->size(), 0.0), column(groups->size());
+    std::vector<double> rowSum(groups->size(), 0.0);
+    std::vector<Rgb> column(groups->size());
     for (std::size_t c = 0; c < shooters.size(); ++c) {
-        shot(c, std::vector<double>{1.0}, 1.0, column);
-        for (std::size_t d = 0; d < groups->size(); ++d) rowSum[d] += column[d];
+        shot(c, std::vector<Rgb>{Rgb(1.0 / 3)}, 1.0, column);
+        for (std::size_t d = 0; d < groups->size(); ++d) rowSum[d] += column[d].x;
     }
     double deviation = 0;
     for (const double sum : rowSum) deviation = std::max(deviation, std::abs(sum - 1));
