@@ -339,31 +339,34 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
         return Rgb(receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter])));
     memberWeight.assign(members.size(), 0.0);
     // Members within kNearInDiameters of the receiver's diameter send their exact kernel averaged
-    // over the receiver (its own rule for its own gap); the rest share what the outline's exact
-    // kernel, averaged over the receiver, leaves after them, in the ratio of the kernels from the
-    // receiver's centroid to each (a member's centroid for the member where it is far for its
-    // size). A uniform group gets the outline's kernel exactly either way; a band held by the few
-    // members beside the receiver is where the centroid's kernel is furthest from the receiver's
-    // average, and with the ratio alone the shot's closure there was 1 - 0.034 (a corner member's
-    // band in a closed box) and the Cornell box reflected 0.06-0.07 point more light than with the
-    // near members' exact kernels (docs/ARCHITECTURE.md, session 19). A shot costs a few flops per
-    // far member (an exact contour integral per member and Gauss point made a shot ~10x slower).
+    // over the receiver; the rest share what the outline's exact kernel, averaged over the
+    // receiver, leaves after them, in the ratio of the kernels from the receiver's centroid to each
+    // (a member's centroid for the member where it is far for its size). A uniform group gets the
+    // outline's kernel exactly either way. A band held by the few members beside the receiver is
+    // where the centroid's kernel is furthest from the receiver's average: with the ratio alone a
+    // shot's closure was 1 - 0.034 for a corner member's band in a closed box (test "a block shot
+    // keeps its power per band in a closed box"), and the Cornell box reflected 0.06-0.07 point
+    // more light than Gauss-Seidel beyond what it does now (docs/ARCHITECTURE.md, session 19). A
+    // shot costs a few flops per far member (an exact contour integral per member and Gauss point
+    // made a shot ~10x slower).
     const double groupGap = glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter];
     const double receiverDiameter = std::sqrt(2.0 * r.area);
     double nearKernel = 0, farByArea = 0;
     Rgb nearByPower(0.0), farByPower(0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         const PatchPolygon& m = g.polygons[members[k]];
-        const double lowerBound = glm::length(r.centroid - m.centroid) - g.patchRadius[members[k]];
-        if (lowerBound < kNearInDiameters * receiverDiameter) {
-            const double f = receiverAverage(r, m, ruleFor(r, m, lowerBound));
+        const glm::dvec3 d = m.centroid - r.centroid;
+        const double r2 = glm::dot(d, d);
+        const double nearWithin = kNearInDiameters * receiverDiameter + g.patchRadius[members[k]];
+        if (r2 < nearWithin * nearWithin) {
+            // 2 x 2 points: in that closed box as close as 4 x 4 (closure within 0.03% against
+            // 0.04%); 4 x 4 cost +15% CPU on the Cornell box, 2 x 2 nothing measurable.
+            const double f = receiverAverage(r, m, kGauss2);
             memberWeight[k] = f / m.area;
             nearKernel += f;
             nearByPower += bandShare[k] * memberWeight[k];
             continue;
         }
-        const glm::dvec3 d = m.centroid - r.centroid;
-        const double r2 = glm::dot(d, d);
         double kernel = 0;  // per unit area of the member
         if (r2 >= kRatioDistanceSquaredOverArea * m.area) {
             const double cosR = glm::dot(r.normal, d), cosM = -glm::dot(m.normal, d);

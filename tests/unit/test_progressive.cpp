@@ -276,9 +276,9 @@ TEST_CASE("a block shot keeps its power per band in a closed box however the ban
         for (std::size_t j = 0; j < mesh.size(); ++j) received += mesh.patches[j].area * column[j];
         const Rgb closure = received / outline.area;
         CAPTURE(g);
-        CHECK(closure.x == radiant::test::relativeTo(1.0, 5e-3));
+        CHECK(closure.x == radiant::test::relativeTo(1.0, 2e-3));
         CHECK(closure.y == radiant::test::relativeTo(1.0, 1e-3));
-        CHECK(closure.z == radiant::test::relativeTo(1.0, 5e-3));
+        CHECK(closure.z == radiant::test::relativeTo(1.0, 2e-3));
         worst = glm::max(worst, glm::abs(closure - Rgb(1.0)));
     }
     MESSAGE("closure's worst deviation per band (corner member / by area / edge strip): " << worst.x << " / " << worst.y
