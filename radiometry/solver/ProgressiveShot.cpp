@@ -345,7 +345,7 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
     // outline's kernel exactly either way. A band held by the few members beside the receiver is
     // where the centroid's kernel is furthest from the receiver's average: with the ratio alone a
     // shot's closure was 1 - 0.034 for a corner member's band in a closed box (test "a block shot
-    // keeps its power per band in a closed box"), and the Cornell box reflected 0.06-0.07 point
+    // keeps its power per band in a closed box"), and the Cornell box reflected 0.04-0.07 point
     // more light than Gauss-Seidel beyond what it does now (docs/ARCHITECTURE.md, session 19). A
     // shot costs a few flops per far member (an exact contour integral per member and Gauss point
     // made a shot ~10x slower).
