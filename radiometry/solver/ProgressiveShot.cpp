@@ -338,19 +338,35 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
     if (memberShare.empty() || members.size() == 1)
         return Rgb(receiverAverage(r, s, ruleFor(r, s, glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter])));
     memberWeight.assign(members.size(), 0.0);
-    // The outline's exact kernel averaged over the receiver, scaled by how the kernel from the
-    // receiver's centroid to each member weighs the power against the area: a uniform group gets the
-    // outline's kernel exactly, the kernel's own errors (the centroid for the receiver, a member's
-    // centroid for the member where it is far for its size) cancel in the ratio but for their
-    // variation across the group, and a shot costs a few flops per member beyond the few near ones
-    // (an exact contour integral per member and Gauss point made a shot ~10x slower).
+    // Members within kNearInDiameters of the receiver's diameter send their exact kernel averaged
+    // over the receiver; the rest share what the outline's exact kernel, averaged over the
+    // receiver, leaves after them, in the ratio of the kernels from the receiver's centroid to each
+    // (a member's centroid for the member where it is far for its size). A uniform group gets the
+    // outline's kernel exactly either way. A band held by the few members beside the receiver is
+    // where the centroid's kernel is furthest from the receiver's average: with the ratio alone a
+    // shot's closure was 1 - 0.034 for a corner member's band in a closed box (test "a block shot
+    // keeps its power per band in a closed box"), and the Cornell box reflected 0.04-0.07 point
+    // more light than Gauss-Seidel beyond what it does now (docs/ARCHITECTURE.md, session 19). A
+    // shot costs a few flops per far member (an exact contour integral per member and Gauss point
+    // made a shot ~10x slower).
     const double groupGap = glm::length(r.centroid - s.centroid) - g.shooterRadius[shooter];
-    double byArea = 0;
-    Rgb byPower(0.0);
+    const double receiverDiameter = std::sqrt(2.0 * r.area);
+    double nearKernel = 0, farByArea = 0;
+    Rgb nearByPower(0.0), farByPower(0.0);
     for (std::size_t k = 0; k < members.size(); ++k) {
         const PatchPolygon& m = g.polygons[members[k]];
         const glm::dvec3 d = m.centroid - r.centroid;
         const double r2 = glm::dot(d, d);
+        const double nearWithin = kNearInDiameters * receiverDiameter + g.patchRadius[members[k]];
+        if (r2 < nearWithin * nearWithin) {
+            // 2 x 2 points: in that closed box as close as 4 x 4 (closure within 0.03% against
+            // 0.04%); on the Cornell box 4 x 4 cost +15% CPU, 2 x 2 -2% to +9% (medians, noisy runs).
+            const double f = receiverAverage(r, m, kGauss2);
+            memberWeight[k] = f / m.area;
+            nearKernel += f;
+            nearByPower += bandShare[k] * memberWeight[k];
+            continue;
+        }
         double kernel = 0;  // per unit area of the member
         if (r2 >= kRatioDistanceSquaredOverArea * m.area) {
             const double cosR = glm::dot(r.normal, d), cosM = -glm::dot(m.normal, d);
@@ -358,11 +374,18 @@ Rgb unoccludedFromShot(const ShotGeometry& g, std::size_t shooter, std::size_t r
         } else {
             kernel = pointToPolygonFormFactor(r.centroid, r.normal, m.corners()) / m.area;
         }
-        memberWeight[k] = kernel;
-        byPower += bandShare[k] * kernel;
-        byArea += m.area / s.area * kernel;
+        memberWeight[k] = -kernel;  // a far member's, scaled below (the sign marks it)
+        farByArea += m.area * kernel;
+        farByPower += bandShare[k] * kernel;
     }
-    if (byArea > 0) return receiverAverage(r, s, ruleFor(r, s, groupGap)) * byPower / byArea;
+    if (farByArea > 0) {
+        const double scale = std::max(0.0, receiverAverage(r, s, ruleFor(r, s, groupGap)) - nearKernel) / farByArea;
+        for (double& w : memberWeight)
+            if (w < 0) w *= -scale;
+        return (nearByPower + scale * farByPower) * s.area;
+    }
+    for (double& w : memberWeight) w = std::max(0.0, w);
+    if (nearKernel > 0) return nearByPower * s.area;
     // The receiver's centroid sees none of the group's members (but its Gauss points may): each
     // member's kernel averaged over the receiver.
     Rgb sum(0.0);

@@ -14,6 +14,7 @@
 #include <thread>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "radiometry/common/Error.h"
@@ -25,6 +26,7 @@
 
 #include "tests/support/CatalogViewFactors.h"
 #include "tests/support/PenumbraPlates.h"
+#include "tests/support/Relative.h"
 
 using namespace radiant;
 using radiant::test::parallelRectangles;
@@ -238,6 +240,49 @@ TEST_CASE("block-shooting furnace reaches E/(1-rho), and again after the reflect
     CHECK(solver->lastStats().residual > 1e-2);
     solveProgressiveTo(*solver, 1e-6);
     check(0.3);
+}
+
+TEST_CASE("a block shot keeps its power per band in a closed box however the band sits on its members") {
+    // Everything a face of a closed box sends lands on the box: sum_j A_j F_{j -> group, b} = A_group
+    // for every band whatever the members' share of it, as F_{j -> group, b} A_j / A_group is the
+    // fraction of band b's power that reaches j. Unoccluded (no rays), so only the kernel is tested:
+    // a band held by one corner member, one by the edge strip, one spread by area.
+    const Scene box = greyClosedBox(1.0, 1.0, 1.0, {"grey", Rgb(0.5), ExitanceRgb(Rgb(0.0))});
+    const PatchMesh mesh = meshForProgressive(box, 0.0025);
+    const ProgressiveShooters shooters = blockShooters(mesh, 10);
+    SolverOptions options;
+    options.formFactors.visibilityRays = 0;
+    const GroupShotFormFactors shot = makeRayCastGroupShotFormFactors(box, mesh, shooters, options);
+    std::vector<Rgb> column(mesh.size());
+    Rgb worst(0.0);
+    for (std::size_t g = 0; g < shooters.size(); ++g) {
+        const auto members = shooters.group(g);
+        REQUIRE(members.size() > 20);
+        // The member nearest the outline's first corner, and those within 5 cm of its first edge.
+        const PatchPolygon& outline = shooters.polygons[g];
+        const glm::dvec3 corner = outline.vertices[0], edge = glm::normalize(outline.vertices[1] - corner);
+        std::size_t nearest = 0;
+        std::vector<Rgb> power(members.size(), Rgb(0.0));
+        for (std::size_t k = 0; k < members.size(); ++k) {
+            const glm::dvec3 c = mesh.polygon(members[k]).centroid;
+            if (glm::length(c - corner) < glm::length(mesh.polygon(members[nearest]).centroid - corner)) nearest = k;
+            const glm::dvec3 off = (c - corner) - glm::dot(c - corner, edge) * edge;
+            power[k].y = mesh.patches[members[k]].area;
+            power[k].z = glm::length(off) < 0.05 ? mesh.patches[members[k]].area : 0.0;
+        }
+        power[nearest].x = mesh.patches[members[nearest]].area;
+        shot(g, power, 1.0, column);
+        Rgb received(0.0);
+        for (std::size_t j = 0; j < mesh.size(); ++j) received += mesh.patches[j].area * column[j];
+        const Rgb closure = received / outline.area;
+        CAPTURE(g);
+        CHECK(closure.x == radiant::test::relativeTo(1.0, 2e-3));
+        CHECK(closure.y == radiant::test::relativeTo(1.0, 1e-3));
+        CHECK(closure.z == radiant::test::relativeTo(1.0, 2e-3));
+        worst = glm::max(worst, glm::abs(closure - Rgb(1.0)));
+    }
+    MESSAGE("closure's worst deviation per band (corner member / by area / edge strip): " << worst.x << " / " << worst.y
+                                                                                         << " / " << worst.z);
 }
 
 // ctest-case-labels: heavy
