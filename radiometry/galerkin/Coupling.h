@@ -26,12 +26,11 @@
 // against the catalog's closed forms for ratios of distance to size).
 #include <array>
 #include <cstddef>
-#include <numbers>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
 
+#include "radiometry/formfactor/PointKernel.h"
 #include "radiometry/galerkin/Basis.h"
 #include "radiometry/galerkin/Quadrature.h"
 #include "radiometry/mesh/PatchMesh.h"
@@ -55,14 +54,6 @@ struct ElementNodes {
 
 [[nodiscard]] ElementNodes elementNodes(const PatchPolygon& element, const QuadratureRule& rule);
 
-/// G(x, y) without visibility: the point-to-point kernel cos cos / (pi r^2), zero behind either side.
-[[nodiscard]] inline double pointKernel(const glm::dvec3& x, const glm::dvec3& nx, const glm::dvec3& y, const glm::dvec3& ny) {
-    const glm::dvec3 d = y - x;
-    const double r2 = glm::dot(d, d);
-    const double cosX = glm::dot(nx, d), cosY = -glm::dot(ny, d);  // each times r
-    if (!(cosX > 0) || !(cosY > 0)) return 0.0;
-    return cosX * cosY / (std::numbers::pi * r2 * r2);
-}
 
 /// K with a visibility per node pair, visible(receiverNode, sourceNode) in [0, 1]. The sum runs
 /// receiver node by receiver node: first the source side's moments g_j = sum_q A_q G V phi_j(y_q),
@@ -75,7 +66,7 @@ template <class Visibility>
     for (std::size_t p = 0; p < receiver.points.size(); ++p) {
         BasisCoefficients g{};
         for (std::size_t q = 0; q < source.points.size(); ++q) {
-            const double kernel = pointKernel(receiver.points[p], receiver.normal, source.points[q], source.normal);
+            const double kernel = pointToPointKernel(receiver.points[p], receiver.normal, source.points[q], source.normal);
             if (kernel == 0) continue;
             const double weight = source.areas[q] * kernel * visible(p, q);
             for (std::size_t j = 0; j < sourceSize; ++j) g[j] += weight * source.basis[q][j];

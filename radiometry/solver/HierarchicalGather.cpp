@@ -13,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "radiometry/formfactor/PointKernel.h"
 #include "radiometry/solver/HierarchicalFormFactor.h"
 #include "radiometry/solver/HierarchicalParallel.h"
 #include "radiometry/solver/HierarchicalSolver.h"
@@ -123,9 +124,7 @@ constexpr double kFarTermDistanceSquaredOverArea = 4;
 /// the Cornell box's ~1.05M row terms: without it the solve's CPU is ~7% lower and the patches within
 /// 0.0015 percentage points of before (docs/ARCHITECTURE.md, "Accuracy", Hierarchical item 19).
 double centroidKernel(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q) {
-    const glm::dvec3 d = q.centroid - x;
-    const double r2 = glm::dot(d, d);
-    return q.area * std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(q.normal, d)) / (std::numbers::pi * r2 * r2);
+    return q.area * pointToPointKernel(x, n, q.centroid, q.normal);
 }
 
 /// Whether a gather at x reads `source` through its children: area over squared distance above

@@ -501,8 +501,9 @@ Rgb perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t 
         const double v =
             fraction(n, memberSeed, [&](std::uint64_t i) { return std::tuple{to[i], m.normal, Rgb(1.0)}; }, unused);
         if (v < 0) continue;
-        sum += bandP(k) * v;
-        counted += bandP(k);
+        const Rgb bandWeight = bandP(k);
+        sum += bandWeight * v;
+        counted += bandWeight;
     }
     if (pool > 0) {
         const int n = std::max(1, static_cast<int>(std::ceil(rays * pool)));

@@ -247,7 +247,7 @@ TEST_CASE("galerkin: a linear source's gathered moments match a direct fine inte
             double irradiance = 0;
             for (std::size_t q = 0; q < sourceFine.points.size(); ++q)
                 irradiance += sourceFine.areas[q] * radiosity(sourceFine.points[q]) *
-                              pointKernel(receiverFine.points[p], receiverFine.normal, sourceFine.points[q], sourceFine.normal);
+                              pointToPointKernel(receiverFine.points[p], receiverFine.normal, sourceFine.points[q], sourceFine.normal);
             for (std::size_t i = 0; i < kMaxBasisSize; ++i)
                 direct[i] += receiverFine.areas[p] / receiverFine.area * receiverFine.basis[p][i] * irradiance;
         }
