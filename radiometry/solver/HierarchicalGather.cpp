@@ -504,17 +504,31 @@ void HierarchicalSolver::buildLeafRows() {
     // own row (the furnace meshed at 0.1 m^2 with 1,536 leaves: with patches up to 4x the leaf read,
     // every leaf within 0.13% of E / (1 - rho); with patches up to 16x, 3.2%).
     const auto resolves = [&](double patchArea, ElementIndex leaf) { return patchArea <= kPatchOverLeaf * tree_.area(leaf); };
+    // The points' leaves on both cores (25k locates on the Cornell box, ~5 ms on one), then gathered
+    // in patch order, as one loop made them.
+    constexpr std::size_t kPointsPerPatch = 9;
+    std::vector<LeafPoint> located(kPointsPerPatch * patches_.size(), LeafPoint{kNoElement, 0, 0.0f, 0.0f});
+    std::vector<double> pointWeight(located.size(), 0.0);
+    parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t p = from; p < to; ++p) {
+            const PatchSample& patch = patches_[p];
+            if (patch.polygon.count < 3) continue;
+            std::size_t k = kPointsPerPatch * p;
+            hierarchical::forGaussPoints(patch.polygon, 3, [&](const glm::dvec3& x, double weight) {
+                located[k] = {tree_.locate(patch.surface, patch.face, x), static_cast<std::uint32_t>(p),
+                              static_cast<float>(weight * patch.area), 0.0f};
+                pointWeight[k++] = weight;
+            });
+        }
+    });
     leafPoints_.clear();
     std::vector<double> resolvedArea(n, 0.0);
-    for (std::size_t p = 0; p < patches_.size(); ++p) {
-        const PatchSample& patch = patches_[p];
-        if (patch.polygon.count < 3) continue;
-        hierarchical::forGaussPoints(patch.polygon, 3, [&](const glm::dvec3& x, double weight) {
-            const ElementIndex leaf = tree_.locate(patch.surface, patch.face, x);
-            if (leaf == kNoElement) return;
-            leafPoints_.push_back({leaf, static_cast<std::uint32_t>(p), static_cast<float>(weight * patch.area), 0.0f});
-            if (resolves(patch.area, leaf)) resolvedArea[leaf] += weight * patch.area;
-        });
+    for (std::size_t k = 0; k < located.size(); ++k) {
+        const LeafPoint& point = located[k];
+        if (point.leaf == kNoElement) continue;
+        leafPoints_.push_back(point);
+        const double area = patches_[point.patch].area;
+        if (resolves(area, point.leaf)) resolvedArea[point.leaf] += pointWeight[k] * area;
     }
     leafFromPatches_.assign(n, 0);
     for (std::size_t e = 0; e < n; ++e) leafFromPatches_[e] = resolvedArea[e] > 0 ? 1 : 0;

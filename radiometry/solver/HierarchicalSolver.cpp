@@ -250,7 +250,11 @@ std::size_t HierarchicalSolver::refine() {
         // 3. Replace each split link by its four children (in parallel: form factors and rays). Each
         //    split owns four slots, so the links land in the same order whatever the scheduling.
         produced_.assign(ElementTree::kChildCount * splits.size(), NewLink{});
-        parallelChunks(splits.size(), threads_, 64, [&](std::size_t from, std::size_t to, unsigned thread) {
+        // Chunks of up to 64 splits, but at least ~8 per thread: of the Cornell box's ~40 passes, 30
+        // have under 64 splits (a whole pass on one core at 64), and a split's four links cost a few
+        // to ~100 us (rays, near kernels), so a small pass's last chunk set its time.
+        const std::size_t chunk = std::clamp<std::size_t>(splits.size() / (8 * std::size_t{threads_}), 1, 64);
+        parallelChunks(splits.size(), threads_, chunk, [&](std::size_t from, std::size_t to, unsigned thread) {
             std::vector<NewLink>& scratch = linksPerThread_[thread];
             for (std::size_t i = from; i < to; ++i) {
                 scratch.clear();
@@ -365,22 +369,28 @@ void HierarchicalSolver::setLeavesToEmission() {
 }
 
 void HierarchicalSolver::mapSolution(bool gathered) {
+    // Both loops per patch on both cores: on one they were ~14 ms of the Cornell box's solve (a
+    // locate per patch after each of ~12 refining steps, a row per patch after each later step).
     if (mappedTreeSize_ != tree_.size() || patchElement_.size() != patches_.size()) {
         patchElement_.resize(patches_.size());
-        for (std::size_t i = 0; i < patches_.size(); ++i) {
-            const PatchSample& patch = patches_[i];
-            // The element about the patch's size holds the area-weighted mean of the leaves under it.
-            patchElement_[i] = tree_.locate(patch.surface, patch.face, patch.centroid, 0.5 * patch.area);
-        }
+        parallelChunks(patches_.size(), threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
+            for (std::size_t i = from; i < to; ++i) {
+                const PatchSample& patch = patches_[i];
+                // The element about the patch's size holds the area-weighted mean of the leaves under it.
+                patchElement_[i] = tree_.locate(patch.surface, patch.face, patch.centroid, 0.5 * patch.area);
+            }
+        });
         mappedTreeSize_ = tree_.size();
     }
     solution_.resize(patches_.size());
     const auto& radiosity = tree_.radiosity();
     if (gathered && !patchRowsCurrent_) buildPatchRows();
     gathered = gathered && patchRowsCurrent_;
-    for (std::size_t i = 0; i < patches_.size(); ++i)
-        solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
-                                                                   : radiosity[patchElement_[i]] + patchDirectCorrection(i);
+    parallelChunks(patches_.size(), threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t i = from; i < to; ++i)
+            solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
+                                                                       : radiosity[patchElement_[i]] + patchDirectCorrection(i);
+    });
     afterSolutionMapped();
 }
 
