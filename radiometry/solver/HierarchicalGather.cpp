@@ -35,13 +35,17 @@ namespace {
 /// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x, a Gauss rule of
 /// the point kernel over it by q's precomputed nodes: 2 x 2 beyond kFarFieldDistanceSquaredOverArea
 /// (within 0.2% there, a quarter of the cost: the patch rows of a 2,000-patch mesh took 0.25 s of CPU
-/// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea.
+/// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea, 5 x 5 beyond
+/// kNearGaussDistanceSquaredOverArea (the Cornell box's rows made ~450k contour integrals for sources
+/// within the 3 x 3 rule's distance; docs/ARCHITECTURE.md, "Accuracy", Hierarchical item 20).
 double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q, const hierarchical::SourceRule& rule) {
     // (|centroid - x| - sqrt(A))^2 / A against the rules' thresholds, as squared distances.
     const glm::dvec3 d = q.centroid - x;
     const double distance2 = glm::dot(d, d);
-    if (distance2 > rule.gaussDistance2) {
-        const double f = hierarchical::ruleFormFactor(x, n, q, rule, distance2 > rule.farDistance2);
+    if (distance2 > rule.nearDistance2) {
+        using hierarchical::RuleOrder;
+        const RuleOrder order = distance2 > rule.farDistance2 ? RuleOrder::Far : distance2 > rule.gaussDistance2 ? RuleOrder::Gauss : RuleOrder::Near;
+        const double f = hierarchical::ruleFormFactor(x, n, q, rule, order);
         if (f >= 0) return f;
     }
     return hierarchical::pointToElementFormFactor(x, n, q);
