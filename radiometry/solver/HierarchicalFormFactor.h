@@ -473,18 +473,37 @@ struct LinkKernel {
 /// not see, so the receiver's corners (a tenth of the way in) join the spread: a link whose
 /// receiver touches its source refines until the irradiance a corner leaf would miss is within the
 /// tolerance (the furnace's worst leaves were such corners, 14-27% off before).
-inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
+inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q, const SourceRule* rule = nullptr) {
     const glm::dvec3 apart = p.centroid - q.centroid;
     const double reach = std::sqrt(p.area) + std::sqrt(q.area);
     // The receiver's sample points lie within about sqrt(A_p) of its centroid.
     const double nearestSample = std::max(0.0, glm::length(apart) - std::sqrt(p.area));
     const bool far = nearestSample * nearestSample > kFarFieldDistanceSquaredOverArea * q.area;
-    const double atCentroid = pointToElementFormFactor(p.centroid, p.normal, q, far);
+    // With the source's precomputed rules, each point takes the rule its own distance allows (as the
+    // gather rows' kernel does), Lambert's integral only nearer than kNearGaussDistanceSquaredOverArea
+    // or where the source crosses the point's horizon: the contour integral at five to eighteen
+    // points per link was most of refinement's time.
+    const auto kernel = [&](const glm::dvec3& x) {
+        if (rule != nullptr) {
+            const glm::dvec3 d = q.centroid - x;
+            const double distance2 = glm::dot(d, d);
+            if (distance2 > rule->nearDistance2) {
+                const RuleOrder order = distance2 > rule->farDistance2 ? RuleOrder::Far
+                                        : distance2 > rule->gaussDistance2 ? RuleOrder::Gauss
+                                                                           : RuleOrder::Near;
+                const double f = ruleFormFactor(x, p.normal, q, *rule, order);
+                if (f >= 0) return f;
+            }
+            return pointToElementFormFactor(x, p.normal, q);
+        }
+        return pointToElementFormFactor(x, p.normal, q, far);
+    };
+    const double atCentroid = kernel(p.centroid);
     double sum = 0, lowest = atCentroid, highest = atCentroid;
     std::array<double, 4> atChildren{};
     const std::array<glm::dvec3, 4> children = childCentroids(p);
     for (std::size_t c = 0; c < children.size(); ++c) {
-        const double f = pointToElementFormFactor(children[c], p.normal, q, far);
+        const double f = kernel(children[c]);
         atChildren[c] = f;
         sum += f;
         lowest = std::min(lowest, f);
@@ -492,9 +511,15 @@ inline LinkKernel linkKernel(const PatchPolygon& p, const PatchPolygon& q) {
     }
     double mean = 0.25 * sum;
     if (mean > 0 && glm::dot(apart, apart) < 2.25 * reach * reach) {
-        mean = gaussMeanKernel(p, q);
+        if (rule != nullptr) {
+            mean = 0;
+            forGaussPoints(p, 3, [&](const glm::dvec3& x, double weight) { mean += weight * kernel(x); });
+        } else {
+            mean = gaussMeanKernel(p, q);
+        }
         for (const glm::dvec3& corner : p.corners()) {
-            const double atCorner = pointToElementFormFactor(0.9 * corner + 0.1 * p.centroid, p.normal, q);
+            const double atCorner = rule != nullptr ? kernel(0.9 * corner + 0.1 * p.centroid)
+                                                    : pointToElementFormFactor(0.9 * corner + 0.1 * p.centroid, p.normal, q);
             lowest = std::min(lowest, atCorner);
             highest = std::max(highest, atCorner);
         }

@@ -82,6 +82,7 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
     if (refinement.maxLeafArea > 0) splitLeavesLargerThan(refinement.maxLeafArea);
     setLeavesToEmission();  // before linking: the hidden-link check weighs each link by its source's B
     hiddenCheckThreshold_ = refinementThreshold();
+    extendSourceRules();
     linkRoots(progress);  // sorted afterwards: the order does not depend on scheduling
     mapSolution(false);
 }
@@ -128,7 +129,7 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     const PatchPolygon& p = tree_.polygon(receiver);
     const PatchPolygon& q = tree_.polygon(source);
     if (!hierarchical::facing(p, q)) return 0;
-    const auto [f, spread, atChildren] = hierarchical::linkKernel(p, q);
+    const auto [f, spread, atChildren] = hierarchical::linkKernel(p, q, source < sourceRules_.size() ? &sourceRules_[source] : nullptr);
     if (f <= 0) {
         // No sample point is in front of the source, yet part of the receiver is: the link carries
         // nothing yet, and refinement finds the part that does see the source.
@@ -173,6 +174,20 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     return rays;
 }
 
+void HierarchicalSolver::extendSourceRules() {
+    if (tree_.size() > kMaxElementsWithLinkRules) {
+        sourceRules_ = {};
+        return;
+    }
+    const std::size_t first = sourceRules_.size();
+    if (first >= tree_.size()) return;
+    sourceRules_.resize(tree_.size());
+    parallelChunks(tree_.size() - first, threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
+        for (std::size_t e = first + from; e < first + to; ++e)
+            sourceRules_[e] = hierarchical::makeSourceRule(tree_.polygon(static_cast<ElementIndex>(e)));
+    });
+}
+
 double HierarchicalSolver::emittedPower() const {
     Rgb power(0.0);
     for (const ElementIndex root : tree_.roots()) power += tree_.area(root) * elementSource(root);
@@ -213,6 +228,7 @@ std::size_t HierarchicalSolver::refine() {
     bool anySplit = false;
     raysPerThread_.assign(threads_, 0);
     std::vector<Split> splits;
+    extendSourceRules();  // the rows drop them; refinement resumes after a material or view change
     for (;;) {
         // 1. Which links are too coarse (in parallel; reads only).
         for (auto& buffer : splitsPerThread_) buffer.clear();
@@ -246,6 +262,7 @@ std::size_t HierarchicalSolver::refine() {
                 onSubdivided(e);
             }
         }
+        extendSourceRules();
 
         // 3. Replace each split link by its four children (in parallel: form factors and rays). Each
         //    split owns four slots, so the links land in the same order whatever the scheduling.
@@ -470,7 +487,8 @@ std::size_t HierarchicalSolver::bytes() const {
            patchRows_.capacity() * sizeof(GatherTerm) + occluderCorners_.capacity() * sizeof(glm::dvec3) +
            occluderBegin_.capacity() * sizeof(std::uint32_t) + linkShaft_.capacity() +
            leafPoints_.capacity() * sizeof(LeafPoint) + leafFromPatches_.capacity() +
-           (patchIrradiance_.capacity() + patchPushed_.capacity()) * sizeof(Rgb);
+           (patchIrradiance_.capacity() + patchPushed_.capacity()) * sizeof(Rgb) +
+           sourceRules_.capacity() * sizeof(hierarchical::SourceRule);
 }
 
 std::size_t HierarchicalSolver::raysCast() const {

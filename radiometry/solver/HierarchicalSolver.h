@@ -190,6 +190,11 @@ private:
                             std::vector<GatherTerm>& out) const;
     /// sourceRules_ for every element (kept from the leaf rows to the patch rows of the same step).
     void buildSourceRules();
+    /// sourceRules_ for the elements made since the last call, for refinement's link kernels
+    /// (hierarchical::linkKernel); none above kMaxElementsWithLinkRules elements (~1.2 KB each), where
+    /// links take Lambert's integral as before.
+    void extendSourceRules();
+    static constexpr std::size_t kMaxElementsWithLinkRules = 1u << 15;
     /// Each patch's gather row, rebuilt when refinement changed the links.
     void buildPatchRows();
     /// What each leaf gathers once refinement has settled, in place of its ancestors' means pushed
@@ -264,7 +269,8 @@ private:
     static constexpr std::size_t kMaxShaftOccluders = 256;
     /// Per link while the patch rows are built (shaftClear): 0 not yet tested, 1 clear, 2 maybe blocked.
     mutable std::vector<std::uint8_t> linkShaft_;
-    /// Per element, its quadrature nodes as a source (only while the leaf and patch rows are built).
+    /// Per element, its quadrature nodes as a source (while refining, extendSourceRules; while the leaf
+    /// and patch rows are built).
     std::vector<hierarchical::SourceRule> sourceRules_;
     std::vector<std::size_t> patchRowBegin_;
     std::vector<GatherTerm> patchRows_;

@@ -153,6 +153,8 @@ TEST_CASE("hierarchical scaling: 4x the elements, links per leaf at most 4^(1/3)
 
 #include "radiometry/mesh/ElementTree.h"
 #include "radiometry/solver/HierarchicalFormFactor.h"
+#include "tests/support/CatalogViewFactors.h"
+#include "tests/support/Relative.h"
 
 namespace {
 
@@ -238,6 +240,43 @@ TEST_CASE("hierarchical gather kernel: the 3 x 3 Gauss rule within 0.02% of Lamb
                   doctest::Approx(estimate).scale(0).epsilon(1e-6));
         });
     CHECK(compared > 120);
+}
+
+TEST_CASE("hierarchical link kernel: the source's rules give the catalog's form factors, as Lambert's integral did") {
+    // Refinement's link kernel with the source's precomputed rules (each point by the rule its distance
+    // allows, Lambert's integral nearer than 1 A or across the horizon) against the catalog: unit squares
+    // directly opposed and perpendicular along a shared edge, whole and as quarter elements; and
+    // against the kernel without rules (Lambert's integral at every point nearer than 32 A).
+    const auto square = [](glm::dvec3 origin, glm::dvec3 u, glm::dvec3 v) {
+        return makeElementPolygon(std::vector<glm::dvec3>{origin, origin + u, origin + u + v, origin + v});
+    };
+    const glm::dvec3 x(1, 0, 0), y(0, 1, 0), z(0, 0, 1);
+    for (const double c : {0.25, 0.5, 1.0, 2.0, 4.0}) {
+        CAPTURE(c);
+        const PatchPolygon lower = square(glm::dvec3(0.0), x, y), upper = square(c * z, y, x);
+        const hierarchical::SourceRule rule = hierarchical::makeSourceRule(upper);
+        const hierarchical::LinkKernel withRules = hierarchical::linkKernel(lower, upper, &rule);
+        const hierarchical::LinkKernel exact = hierarchical::linkKernel(lower, upper);
+        // The receiver's own 4-point or 3 x 3 rule leaves up to ~0.5% (the same without the source's rules).
+        CHECK(withRules.mean == test::relativeTo(test::parallelRectangles(1, 1, c), 1e-2));
+        CHECK(withRules.mean == test::relativeTo(exact.mean, 1e-4));
+        CHECK(withRules.spread == doctest::Approx(exact.spread).scale(0).epsilon(1e-3));
+        // A quarter of the upper square, seen from the lower square's opposite quarter: the rule's
+        // distances count from the element's own size.
+        const PatchPolygon quarter = square(c * z + 0.5 * x + 0.5 * y, 0.5 * y, 0.5 * x);
+        const PatchPolygon receiver = square(glm::dvec3(0.0), 0.5 * x, 0.5 * y);
+        const hierarchical::SourceRule quarterRule = hierarchical::makeSourceRule(quarter);
+        CHECK(hierarchical::linkKernel(receiver, quarter, &quarterRule).mean ==
+              test::relativeTo(hierarchical::linkKernel(receiver, quarter).mean, 1e-4));
+    }
+    for (const double h : {0.5, 1.0, 2.0}) {
+        CAPTURE(h);
+        const PatchPolygon floor = square(glm::dvec3(0.0), x, y), wall = square(glm::dvec3(0.0), y, h * z);
+        const hierarchical::SourceRule rule = hierarchical::makeSourceRule(wall);
+        const hierarchical::LinkKernel withRules = hierarchical::linkKernel(floor, wall, &rule);
+        CHECK(withRules.mean == test::relativeTo(test::perpendicularRectangles(1, h, 1), 1e-2));
+        CHECK(withRules.mean == test::relativeTo(hierarchical::linkKernel(floor, wall).mean, 1e-4));
+    }
 }
 
 TEST_CASE("hierarchical gather kernel: the 5 x 5 Gauss rule within 0.02% of Lambert's kernel where the rows use it") {
