@@ -267,9 +267,8 @@ std::size_t HierarchicalSolver::refine() {
         // 3. Replace each split link by its four children (in parallel: form factors and rays). Each
         //    split owns four slots, so the links land in the same order whatever the scheduling.
         produced_.assign(ElementTree::kChildCount * splits.size(), NewLink{});
-        // Chunks of up to 64 splits, but at least ~8 per thread: of the Cornell box's ~40 passes, 30
-        // have under 64 splits (a whole pass on one core at 64), and a split's four links cost a few
-        // to ~100 us (rays, near kernels), so a small pass's last chunk set its time.
+        // Chunks of up to 64 splits, about 8 per thread: 30 of the Cornell box's 41 passes have under
+        // 64 splits, and with a fixed chunk of 64 each ran on one core.
         const std::size_t chunk = std::clamp<std::size_t>(splits.size() / (8 * std::size_t{threads_}), 1, 64);
         parallelChunks(splits.size(), threads_, chunk, [&](std::size_t from, std::size_t to, unsigned thread) {
             std::vector<NewLink>& scratch = linksPerThread_[thread];
