@@ -36,6 +36,9 @@ class RayCaster;
 
 struct ProbeOptions {
     int gatherRaysPerSide = 4;  ///< irradiance: k x k stratified rays to each patch that x sees
+    /// irradiance: weigh each patch's radiosity with a slope fitted to its neighbours (Probe.cpp)
+    /// instead of as a constant; needs the rays above (their points give the kernel's moment)
+    bool gatherSlopes = true;
     int targetRaysPerSide = 8;  ///< target readings: k x k rays to each patch of the target
     std::uint64_t seed = 1;     ///< the jitter is deterministic for a seed
     /// How far from a face's plane a point may lie and still be on it, relative to the scene's size.
@@ -111,8 +114,9 @@ public:
     [[nodiscard]] ProbeReading measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
                                        std::optional<std::size_t> targetSurface = std::nullopt) const;
 
-    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face, plus the lights'
-    /// direct irradiance at x.
+    /// E(x) = sum_j F(dx -> j) V(x, j) <B_j>, skipping the patches of x's own face, plus the lights'
+    /// direct irradiance at x. <B_j> is patch j's radiosity as x's kernel weighs it: B_j plus a
+    /// linear slope across the patch fitted to its neighbours' values (see Probe.cpp).
     [[nodiscard]] IrradianceRgb irradiance(const SurfacePoint& at, const glm::dvec3& n,
                                            std::span<const Rgb> radiosity) const;
     /// Solid angle, projected solid angle and form factor of a surface from x, with visibility.
@@ -126,6 +130,11 @@ private:
     PatchLocator locator_;
     DirectLighting lighting_;
     double sceneSize_ = 1;
+    /// Each patch's neighbours for the gather's linear reconstruction (patches of the same surface and
+    /// face sharing a corner with it), compressed: patch j's are neighbours_[neighbourFirst_[j] ..
+    /// neighbourFirst_[j + 1]).
+    std::vector<std::uint32_t> neighbourFirst_;
+    std::vector<std::uint32_t> neighbours_;
 };
 
 } // namespace radiant
