@@ -128,9 +128,13 @@ VisibleFractions visibleFractions(const glm::dvec3& x, const glm::dvec3& n, cons
 /// Patch j's radiosity slope per band in its plane (W/m^2 per m): weighted least squares, weights
 /// 1 / d^2, over its neighbours' centroids and values, then limited (Barth & Jespersen, "The design
 /// and application of upwind schemes on unstructured meshes", AIAA 89-0366) so that B_j + g.(v - c_j)
-/// at each of j's corners v stays within the range of j's and its neighbours' values: the patch's
-/// mean is kept (a slope integrates to zero over the patch about its centroid) and no corner is made
-/// brighter or darker than the patches round it.
+/// at each of j's corners v inside the face stays within the range of j's and its neighbours' values,
+/// and at a corner on the face's edge stays non-negative: the patch's mean is kept (a slope
+/// integrates to zero over the patch about its centroid), no inner corner is made brighter or darker
+/// than the patches round it, and a row along an edge (the floor's open front in a block's shadow,
+/// a contact line) keeps the slope its neighbours show instead of being flattened for want of a
+/// neighbour beyond it (session 20: the axis-aligned box's shadowed face 5 cm up, Gauss-Seidel,
+/// +3.0 / +3.3 / +4.7% with the range limit there too, +2.2 / +2.5 / +3.5% with this).
 std::array<glm::dvec3, 3> radiositySlope(const PatchMesh& mesh, std::span<const Rgb> radiosity, std::size_t j,
                                          std::span<const std::uint32_t> neighbours) {
     std::array<glm::dvec3, 3> g{glm::dvec3(0.0), glm::dvec3(0.0), glm::dvec3(0.0)};
@@ -157,6 +161,25 @@ std::array<glm::dvec3, 3> radiositySlope(const PatchMesh& mesh, std::span<const 
         lo = glm::min(lo, radiosity[k]);
         hi = glm::max(hi, radiosity[k]);
     }
+    // A corner inside the face (the patches round it close its angle, 2 pi) is limited to the range
+    // round it; a corner on the face's edge (the open front, a contact line) has nothing beyond it to
+    // bound the slope but positivity.
+    std::array<bool, 4> interior{};
+    for (std::uint8_t k = 0; k < p.cornerCount; ++k) {
+        const std::uint32_t v = p.corners[k];
+        const auto angleAt = [&](const Patch& q) {
+            for (std::uint8_t i = 0; i < q.cornerCount; ++i)
+                if (q.corners[i] == v) {
+                    const glm::dvec3 a = mesh.vertices[q.corners[(i + 1) % q.cornerCount]] - mesh.vertices[v];
+                    const glm::dvec3 b = mesh.vertices[q.corners[(i + q.cornerCount - 1) % q.cornerCount]] - mesh.vertices[v];
+                    return std::acos(std::clamp(glm::dot(a, b) / (glm::length(a) * glm::length(b)), -1.0, 1.0));
+                }
+            return 0.0;
+        };
+        double angle = angleAt(p);
+        for (const std::uint32_t q : neighbours) angle += angleAt(mesh.patches[q]);
+        interior[k] = angle > 2 * std::numbers::pi - 1e-6;
+    }
     const double det = aa * bb - ab * ab;
     if (!(det > 1e-9 * (aa + bb) * (aa + bb))) return g;  // neighbours along one line: no slope across it
     for (int c = 0; c < 3; ++c) {
@@ -165,6 +188,10 @@ std::array<glm::dvec3, 3> radiositySlope(const PatchMesh& mesh, std::span<const 
         double limit = 1;
         for (std::uint8_t k = 0; k < p.cornerCount; ++k) {
             const double delta = glm::dot(slope, mesh.vertices[p.corners[k]] - p.centroid);
+            if (!interior[k]) {
+                if (delta < 0) limit = std::min(limit, -radiosity[j][c] / delta);
+                continue;
+            }
             if (delta > 0) limit = std::min(limit, (hi[c] - radiosity[j][c]) / delta);
             else if (delta < 0) limit = std::min(limit, (lo[c] - radiosity[j][c]) / delta);
         }

@@ -11,7 +11,11 @@
 //         Lambert's exact point-to-polygon form factor; V the visible fraction of patch j seen from
 //         x, from stratified rays weighted by the form-factor kernel cos_x cos_j / r^2, so that V F
 //         estimates the occluded integral. This is the gather of Wallace, Elmquist & Haines, "A Ray
-//         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point.
+//         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point. B_j is read
+//         with a slope across the patch (least squares on its neighbours, limited after Barth &
+//         Jespersen, AIAA 89-0366), weighted by the kernel's first moment over the same rays: a
+//         point near a patch weighs its near side more, where a shadow or a contact makes the
+//         radiosity fall steeply.
 //   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
 //   projected solid angle (integral of cos theta_x d omega) and form factor, each times its visible
 //   fraction (rays weighted by the kernel whose integral it corrects).

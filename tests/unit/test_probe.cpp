@@ -127,7 +127,9 @@ TEST_CASE("the gather reads a patch's slope: a linear radiosity over a near squa
     // M = h^2 / (2 pi) [g(u0) - g(u1)], g(u) = (atan(v1 / a) - atan(v0 / a)) / a, a = sqrt(u^2 + h^2).
     // A constant per patch reads E 1.7-3.8% off at these points (it weighs each patch's far side as
     // much as its near side); with the slope fitted to the neighbours 0.05-0.32% (the kernel's
-    // moment is estimated from the gather's 4 x 4 ray points).
+    // moment is estimated from the gather's 4 x 4 ray points). The last point lies under the
+    // emitter's edge row: limited to its neighbours' range there too, that row's slope is flattened
+    // and the reading is -1.6% off; the edge's corners are bounded only by positivity (-0.05%).
     const double h = 0.02, slope = 1.8;
     const Scene scene = parallelSquares(h);
     const PatchMesh mesh = meshScene(scene, probeMeshing(0.01));
@@ -143,7 +145,8 @@ TEST_CASE("the gather reads a patch's slope: a linear radiosity over a near squa
     constant.gatherSlopes = false;
     const Probe probe(scene, mesh, &rays), probeConstant(scene, mesh, &rays, constant);
     double worstBefore = 0;
-    for (glm::dvec3 x : {glm::dvec3(0.03, 0.01, 0), glm::dvec3(-0.12, 0.07, 0), glm::dvec3(0.21, -0.26, 0)}) {
+    for (glm::dvec3 x : {glm::dvec3(0.03, 0.01, 0), glm::dvec3(-0.12, 0.07, 0), glm::dvec3(0.21, -0.26, 0),
+                         glm::dvec3(0.47, 0.12, 0)}) {
         CAPTURE(x.x);
         CAPTURE(x.y);
         const double u0 = -0.5 - x.x, u1 = 0.5 - x.x, v0 = -0.5 - x.y, v1 = 0.5 - x.y;
