@@ -11,7 +11,11 @@
 //         Lambert's exact point-to-polygon form factor; V the visible fraction of patch j seen from
 //         x, from stratified rays weighted by the form-factor kernel cos_x cos_j / r^2, so that V F
 //         estimates the occluded integral. This is the gather of Wallace, Elmquist & Haines, "A Ray
-//         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point.
+//         Tracing Algorithm for Progressive Radiosity" (SIGGRAPH 1989), at one point. B_j is read
+//         with a slope across the patch (least squares on its neighbours, limited after Barth &
+//         Jespersen, AIAA 89-0366), weighted by the kernel's first moment over the same rays: a
+//         point near a patch weighs its near side more, where a shadow or a contact makes the
+//         radiosity fall steeply.
 //   For a target surface: its solid angle (the part above x's horizon, Van Oosterom & Strackee),
 //   projected solid angle (integral of cos theta_x d omega) and form factor, each times its visible
 //   fraction (rays weighted by the kernel whose integral it corrects).
@@ -36,6 +40,9 @@ class RayCaster;
 
 struct ProbeOptions {
     int gatherRaysPerSide = 4;  ///< irradiance: k x k stratified rays to each patch that x sees
+    /// irradiance: weigh each patch's radiosity with a slope fitted to its neighbours (Probe.cpp)
+    /// instead of as a constant; needs the rays above (their points give the kernel's moment)
+    bool gatherSlopes = true;
     int targetRaysPerSide = 8;  ///< target readings: k x k rays to each patch of the target
     std::uint64_t seed = 1;     ///< the jitter is deterministic for a seed
     /// How far from a face's plane a point may lie and still be on it, relative to the scene's size.
@@ -111,8 +118,9 @@ public:
     [[nodiscard]] ProbeReading measure(const SurfacePoint& at, const glm::dvec3& n, std::span<const Rgb> radiosity,
                                        std::optional<std::size_t> targetSurface = std::nullopt) const;
 
-    /// E(x) = sum_j B_j F(dx -> j) V(x, j), skipping the patches of x's own face, plus the lights'
-    /// direct irradiance at x.
+    /// E(x) = sum_j F(dx -> j) V(x, j) <B_j>, skipping the patches of x's own face, plus the lights'
+    /// direct irradiance at x. <B_j> is patch j's radiosity as x's kernel weighs it: B_j plus a
+    /// linear slope across the patch fitted to its neighbours' values (see Probe.cpp).
     [[nodiscard]] IrradianceRgb irradiance(const SurfacePoint& at, const glm::dvec3& n,
                                            std::span<const Rgb> radiosity) const;
     /// Solid angle, projected solid angle and form factor of a surface from x, with visibility.
@@ -126,6 +134,11 @@ private:
     PatchLocator locator_;
     DirectLighting lighting_;
     double sceneSize_ = 1;
+    /// Each patch's neighbours for the gather's linear reconstruction (patches of the same surface and
+    /// face sharing a corner with it), compressed: patch j's are neighbours_[neighbourFirst_[j] ..
+    /// neighbourFirst_[j + 1]).
+    std::vector<std::uint32_t> neighbourFirst_;
+    std::vector<std::uint32_t> neighbours_;
 };
 
 } // namespace radiant
