@@ -250,8 +250,9 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     ImGui::TextDisabled("per band: red  green  blue");
     rgbRow("E", "W/m\xC2\xB2", reading.irradiance.value());
     if (ImGui::IsItemHovered())
-        ImGui::SetTooltip("Irradiance gathered at this point: the solver's patch radiosities seen through Lambert's\n"
-                          "exact point-to-polygon form factors, with ray-cast visibility");
+        ImGui::SetTooltip("Irradiance gathered at this point: the solver's patch radiosities, each read with the slope\n"
+                          "its neighbours on the same face show (limited, its mean kept), seen through\n"
+                          "Lambert's exact point-to-polygon form factors, with ray-cast visibility");
     rgbRow("rho", "", material.reflectance);
     // The radiosity equation at this point: what leaves is what is emitted plus what is reflected.
     rgbRow("B = M+rho E", "W/m\xC2\xB2", reading.radiosity.value());
