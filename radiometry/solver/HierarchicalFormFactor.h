@@ -223,7 +223,7 @@ inline double gaussMeanKernel(const PatchPolygon& receiver, const PatchPolygon& 
     return weights > 0 ? sum / weights : 0;
 }
 
-/// Calls visit(x, w) for the n x n Gauss-Legendre points of the polygon (n = 2 or 3; bilinear map on
+/// Calls visit(x, w) for the n x n Gauss-Legendre points of the polygon (n = 2, 3 or 5; bilinear map on
 /// a quad, the collapsed Duffy map on a triangle), w the area weights, which sum to 1.
 template <class Visit>
 void forGaussPoints(const PatchPolygon& polygon, int n, Visit&& visit) {
@@ -231,12 +231,16 @@ void forGaussPoints(const PatchPolygon& polygon, int n, Visit&& visit) {
     static constexpr std::array<double, 2> weight2{0.5, 0.5};
     static constexpr std::array<double, 3> node3{0.1127016653792583, 0.5, 0.8872983346207417};
     static constexpr std::array<double, 3> weight3{5.0 / 18, 8.0 / 18, 5.0 / 18};
-    const double* node = n == 3 ? node3.data() : node2.data();
-    const double* weight = n == 3 ? weight3.data() : weight2.data();
-    const int count = n == 3 ? 3 : 2;
+    static constexpr std::array<double, 5> node5{0.04691007703066800, 0.23076534494715845, 0.5, 0.76923465505284155,
+                                                 0.95308992296933200};
+    static constexpr std::array<double, 5> weight5{0.11846344252809454, 0.23931433524968324, 0.28444444444444444,
+                                                   0.23931433524968324, 0.11846344252809454};
+    const double* node = n == 5 ? node5.data() : n == 3 ? node3.data() : node2.data();
+    const double* weight = n == 5 ? weight5.data() : n == 3 ? weight3.data() : weight2.data();
+    const int count = n == 5 ? 5 : n == 3 ? 3 : 2;
     const auto& v = polygon.vertices;
-    std::array<glm::dvec3, 9> points;
-    std::array<double, 9> weights{};
+    std::array<glm::dvec3, 25> points;
+    std::array<double, 25> weights;
     double total = 0;
     for (int i = 0; i < count; ++i)
         for (int k = 0; k < count; ++k) {
@@ -338,32 +342,13 @@ inline SourceRule makeSourceRule(const PatchPolygon& source) {
     };
     if (rule.gaussCount > 0) pack(rule.gauss, rule.gaussWeight, rule.gaussCount, rule.gaussX, rule.gaussY, rule.gaussZ, rule.gaussW);
     if (source.count >= 3) {
-        // 5 x 5 Gauss-Legendre on [0, 1], through forGaussPoints' maps (bilinear; collapsed on a triangle).
-        static constexpr std::array<double, 5> node5{0.04691007703066800, 0.23076534494715845, 0.5, 0.76923465505284155,
-                                                     0.95308992296933200};
-        static constexpr std::array<double, 5> weight5{0.11846344252809454, 0.23931433524968324, 0.28444444444444444,
-                                                       0.23931433524968324, 0.11846344252809454};
         std::array<glm::dvec3, 25> nodes{};
         std::array<double, 25> weights{};
-        double total = 0;
-        for (std::size_t i = 0; i < 5; ++i)
-            for (std::size_t k = 0; k < 5; ++k) {
-                const double u = node5[i], w = node5[k];
-                glm::dvec3 y, du, dw;
-                if (source.count == 4) {
-                    y = (1 - w) * ((1 - u) * v[0] + u * v[1]) + w * ((1 - u) * v[3] + u * v[2]);
-                    du = (1 - w) * (v[1] - v[0]) + w * (v[2] - v[3]);
-                    dw = (1 - u) * (v[3] - v[0]) + u * (v[2] - v[1]);
-                } else {
-                    y = v[0] + u * (v[1] - v[0]) + u * w * (v[2] - v[1]);
-                    du = (v[1] - v[0]) + w * (v[2] - v[1]);
-                    dw = u * (v[2] - v[1]);
-                }
-                nodes[5 * i + k] = y;
-                weights[5 * i + k] = weight5[i] * weight5[k] * glm::length(glm::cross(du, dw));
-                total += weights[5 * i + k];
-            }
-        for (double& w : weights) w = total > 0 ? w / total : 0;
+        std::size_t filled = 0;
+        forGaussPoints(source, 5, [&](const glm::dvec3& y, double w) {
+            nodes[filled] = y;
+            weights[filled++] = w;
+        });
         pack(nodes, weights, 25, rule.nearX, rule.nearY, rule.nearZ, rule.nearW);
     }
     if (rule.farCount > 0) pack(rule.far, rule.farWeight, rule.farCount, rule.farX, rule.farY, rule.farZ, rule.farW);
