@@ -181,13 +181,31 @@ BenchTable benchAccuracy(const BenchOptions& options) {
         double seconds = 0, residual = 0;
         std::chrono::steady_clock::time_point start;
     };
-    const auto solveToTolerance = [&](SolverMethod method, const PatchMesh& on) {
+    const auto solveOnce = [&](SolverMethod method, const PatchMesh& on) {
         TimedSolve run;
         run.start = std::chrono::steady_clock::now();
         run.solver = makeSolver(method, scene, on);
         run.residual = run.solver->lastStats().residual;
         while (run.residual > tolerance && secondsSince(run.start) < budget) run.residual = run.solver->step().residual;
         run.seconds = secondsSince(run.start);
+        return run;
+    };
+    // A solve under a second is timed up to kTimedSolves times (as many as fit in kRepeatSeconds
+    // after the first) and the median kept: one run of hierarchical's 0.15 s read 0.15-0.18 s on the
+    // shared machine within minutes (session 21), across the 0.12 s target's verdict. The solutions
+    // are the same (every method is seeded); the first run's solver is the one read.
+    constexpr int kTimedSolves = 5;
+    constexpr double kRepeatSeconds = 2.0;
+    int mostRepeats = 1;
+    const auto solveToTolerance = [&](SolverMethod method, const PatchMesh& on) {
+        TimedSolve run = solveOnce(method, on);
+        std::vector<double> seconds{run.seconds};
+        const auto repeatStart = std::chrono::steady_clock::now();
+        while (!options.quick && run.seconds < 1.0 && static_cast<int>(seconds.size()) < kTimedSolves &&
+               secondsSince(repeatStart) + run.seconds < kRepeatSeconds)
+            seconds.push_back(solveOnce(method, on).seconds);
+        mostRepeats = std::max(mostRepeats, static_cast<int>(seconds.size()));
+        run.seconds = median(seconds);
         return run;
     };
     const auto addRow = [&](const std::string& name, std::size_t patches, const TimedSolve& run, const MethodErrors& errors,
@@ -245,7 +263,8 @@ BenchTable benchAccuracy(const BenchOptions& options) {
         "its solution and B = M + rho E, as the Probe panel and `radiant probe` read them. Meshing: the default",
         "(" + formatNumber(meshing.maxPatchArea, 2) + " m^2, " + std::to_string(mesh.size()) +
             " patches); solvers at their default options, stepped to residual " + formatNumber(tolerance, 2) +
-            " (the lab's tolerance); solve = set-up (form factors, links) + steps, wall clock.",
+            " (the lab's tolerance); solve = set-up (form factors, links) + steps, wall clock: the median of up to " +
+            std::to_string(mostRepeats) + " runs where one takes under 1 s (as many as fit in " + formatNumber(kRepeatSeconds) + " s).",
         "B vs mesh's own: the method's B at the points against Gauss-Seidel's on the same mesh stepped to residual " +
             formatNumber(kConverged, 2) + " (the solver's share of the error; the rest is the mesh's and the point's).",
         "Reference: radiometry/reference/ path tracer, " + std::to_string(paths) + " paths in " +
