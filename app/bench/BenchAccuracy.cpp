@@ -263,8 +263,10 @@ BenchTable benchAccuracy(const BenchOptions& options) {
         "its solution and B = M + rho E, as the Probe panel and `radiant probe` read them. Meshing: the default",
         "(" + formatNumber(meshing.maxPatchArea, 2) + " m^2, " + std::to_string(mesh.size()) +
             " patches); solvers at their default options, stepped to residual " + formatNumber(tolerance, 2) +
-            " (the lab's tolerance); solve = set-up (form factors, links) + steps, wall clock: the median of up to " +
-            std::to_string(mostRepeats) + " runs where one takes under 1 s (as many as fit in " + formatNumber(kRepeatSeconds) + " s).",
+            " (the lab's tolerance); solve = set-up (form factors, links) + steps, wall clock" +
+            (mostRepeats > 1 ? ": the median of up to " + std::to_string(mostRepeats) +
+                                   " runs where one takes under 1 s (as many as fit in " + formatNumber(kRepeatSeconds) + " s)."
+                             : std::string(", one run.")),
         "B vs mesh's own: the method's B at the points against Gauss-Seidel's on the same mesh stepped to residual " +
             formatNumber(kConverged, 2) + " (the solver's share of the error; the rest is the mesh's and the point's).",
         "Reference: radiometry/reference/ path tracer, " + std::to_string(paths) + " paths in " +
