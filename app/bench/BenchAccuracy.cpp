@@ -10,150 +10,18 @@
 #include <string>
 #include <vector>
 
-#include <glm/geometric.hpp>
-
+#include "app/bench/AccuracyCheck.h"
 #include "app/bench/BenchTable.h"
 #include "radiometry/common/Error.h"
 #include "radiometry/geometry/RayCaster.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/Probe.h"
-#include "radiometry/reference/PathTracer.h"
-#include "radiometry/reference/ReferencePoint.h"
-#include "radiometry/reference/ReferenceRun.h"
 #include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/SolveDefaults.h"
 #include "radiometry/solver/Solver.h"
 
 namespace radiant::app {
 
-namespace {
-
-/// A solution's distance from another on the same mesh, patch by patch: each patch's largest relative
-/// band error, averaged by area over the patches the reference lights (B above 1e-9 W/m^2 in some band).
-struct PatchDistance {
-    double mean = 0;
-    std::size_t over5Percent = 0;
-};
-PatchDistance patchDistance(const PatchMesh& mesh, const std::vector<Rgb>& solution, const std::vector<Rgb>& reference) {
-    PatchDistance d;
-    double area = 0;
-    for (std::size_t p = 0; p < mesh.size() && p < solution.size() && p < reference.size(); ++p) {
-        double worst = 0;
-        bool lit = false;
-        for (int b = 0; b < 3; ++b) {
-            if (!(reference[p][b] > 1e-9)) continue;
-            lit = true;
-            worst = std::max(worst, std::abs(solution[p][b] - reference[p][b]) / reference[p][b]);
-        }
-        if (!lit) continue;
-        d.mean += mesh.patches[p].area * worst;
-        area += mesh.patches[p].area;
-        d.over5Percent += worst > 0.05 ? 1 : 0;
-    }
-    if (area > 0) d.mean /= area;
-    return d;
-}
-
-struct AccuracyPoint {
-    std::string label;
-    ReferencePoint at;
-    ReferenceEstimate reference;
-};
-
-/// A point on `surface` near `approximate`: projected onto the plane of the surface's face whose
-/// polygon it falls in (the measured left wall is two triangles out of one plane).
-ReferencePoint pointOn(const Scene& scene, const std::string& surface, const glm::dvec3& approximate) {
-    const std::size_t s = scene.findSurface(surface);
-    if (s == Scene::npos) throw RadiantError({scene.name, "bench accuracy"}, "no surface '" + surface + "'");
-    for (const Face& face : scene.surfaces[s].faces) {
-        const glm::dvec3 onPlane = approximate - glm::dot(face.normal, approximate - face.vertices[0]) * face.normal;
-        try {
-            const ReferencePoint at = locateReferencePoint(scene, onPlane, face.normal);
-            if (at.surface == s) return at;
-        } catch (const RadiantError&) {
-        }
-    }
-    throw RadiantError({scene.name, "bench accuracy"}, "no point of '" + surface + "' near the one asked for");
-}
-
-/// The centre of a block's side (faces 1-4 of a block; face 0 is its top): at least 8 cm from the
-/// side's edges on either block.
-ReferencePoint blockSide(const Scene& scene, const std::string& block, std::size_t side) {
-    const std::size_t s = scene.findSurface(block);
-    const Face& face = scene.surfaces.at(s).faces.at(side);
-    glm::dvec3 centre(0.0);
-    for (const glm::dvec3& v : face.vertices) centre += v / static_cast<double>(face.vertices.size());
-    return locateReferencePoint(scene, centre, face.normal);
-}
-
-/// Floor, ceiling, back, green and red walls (two points each) and the four sides of each block:
-/// every point at least 5 cm from its face's edges. Metres; the Cornell box is 0.55 m across.
-std::vector<AccuracyPoint> accuracyPoints(const Scene& scene) {
-    std::vector<AccuracyPoint> points;
-    const auto add = [&](std::string label, const ReferencePoint& at) { points.push_back({std::move(label), at, {}}); };
-    add("floor, front right", pointOn(scene, "floor", {0.45, 0, 0.08}));
-    add("floor, behind the short block", pointOn(scene, "floor", {0.12, 0, 0.45}));
-    add("ceiling, front right corner", pointOn(scene, "ceiling", {0.50, 0.5488, 0.06}));
-    add("ceiling, back left", pointOn(scene, "ceiling", {0.10, 0.5488, 0.45}));
-    add("back wall, centre", pointOn(scene, "back wall", {0.28, 0.30, 0.5592}));
-    add("back wall, high left", pointOn(scene, "back wall", {0.08, 0.48, 0.5592}));
-    add("green wall, centre", pointOn(scene, "right wall", {0, 0.27, 0.28}));
-    add("green wall, low back", pointOn(scene, "right wall", {0, 0.07, 0.48}));
-    // Away from the diagonal that splits the measured red wall into two triangles.
-    add("red wall, low back", pointOn(scene, "left wall", {0.553, 0.15, 0.40}));
-    add("red wall, high front", pointOn(scene, "left wall", {0.555, 0.47, 0.07}));
-    for (std::size_t side = 1; side <= 4; ++side) {
-        add("short block, side " + std::to_string(side), blockSide(scene, "short block", side));
-        add("tall block, side " + std::to_string(side), blockSide(scene, "tall block", side));
-    }
-    return points;
-}
-
-struct MethodErrors {
-    double meanB = 0, worstB = 0, meanE = 0, worstE = 0;
-    std::string worstBAt;
-};
-
-/// Each method's B and E at the points against the path tracer's, over every point and band.
-MethodErrors errorsAgainstReference(const std::vector<AccuracyPoint>& points, const std::vector<ProbeReading>& readings) {
-    MethodErrors errors;
-    std::size_t terms = 0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        const AccuracyPoint& point = points[k];
-        const ProbeReading& reading = readings[k];
-        for (int band = 0; band < 3; ++band) {
-            const double bRef = point.reference.radiosity.value()[band];
-            const double eRef = point.reference.irradiance.value()[band];
-            const double bError = std::abs(reading.radiosity.value()[band] - bRef) / bRef;
-            const double eError = std::abs(reading.irradiance.value()[band] - eRef) / eRef;
-            errors.meanB += bError;
-            errors.meanE += eError;
-            ++terms;
-            if (bError > errors.worstB) {
-                errors.worstB = bError;
-                errors.worstBAt = point.label;
-            }
-            errors.worstE = std::max(errors.worstE, eError);
-        }
-    }
-    errors.meanB /= static_cast<double>(terms);
-    errors.meanE /= static_cast<double>(terms);
-    return errors;
-}
-
-/// Per point, the band mean of (value / reference - 1): signed, so the notes show which way a
-/// point is off.
-double signedError(const Rgb& value, const Rgb& reference) {
-    return ((value.x / reference.x - 1) + (value.y / reference.y - 1) + (value.z / reference.z - 1)) / 3;
-}
-
-std::string signedPercent(double fraction) {
-    char text[32];
-    std::snprintf(text, sizeof text, "%+.2f%%", 100 * fraction);
-    return text;
-}
-
-} // namespace
 
 BenchTable benchAccuracy(const BenchOptions& options) {
     BenchTable table{"Accuracy against the path-traced reference (Cornell box, each method at its defaults)",
@@ -166,24 +34,9 @@ BenchTable benchAccuracy(const BenchOptions& options) {
 
     // The reference first: every method is compared with the same estimates.
     const double wantedError = options.quick ? 0.01 : 0.002;
-    const auto perPointBudget = std::chrono::duration<double>(options.quick ? 20.0 : 300.0);
-    const PathTracer tracer(scene, rays);
     std::vector<AccuracyPoint> points = accuracyPoints(scene);
-    const auto referenceStart = std::chrono::steady_clock::now();
-    double worstReferenceError = 0;
-    std::uint64_t paths = 0;
-    for (std::size_t k = 0; k < points.size(); ++k) {
-        ReferenceRunOptions runOptions;
-        runOptions.seed = 1000 + k;
-        ReferenceRun run(tracer, points[k].at, runOptions);
-        ReferenceStop stop;
-        stop.relativeStandardError = wantedError;
-        stop.time = perPointBudget;
-        points[k].reference = run.runUntil(stop);
-        worstReferenceError = std::max(worstReferenceError, points[k].reference.relativeStandardError());
-        paths += points[k].reference.samples;
-    }
-    const double referenceSeconds = secondsSince(referenceStart);
+    const ReferenceTrace trace = traceReferences(scene, rays, points, wantedError,
+                                                 std::chrono::duration<double>(options.quick ? 20.0 : 300.0));
 
     MeshingOptions meshing;
     meshing.maxPatchArea = kSolveDefaults.maxPatchArea;  // what the lab opens with and `solve` uses
@@ -306,9 +159,9 @@ BenchTable benchAccuracy(const BenchOptions& options) {
             formatNumber(kConverged, 2) + " (the solver's share of the error; the rest is the mesh's and the point's).",
         "Patches vs mesh's own: the same per patch, each patch's largest band error averaged over the lit patches by area,",
         "and how many patches are over 5% (Gauss-Seidel's own rays, 16 a pair, are in it too).",
-        "Reference: radiometry/reference/ path tracer, " + std::to_string(paths) + " paths in " +
-            formatNumber(referenceSeconds) + " s; every point traced until its standard error is under " +
-            percent(wantedError) + " of E in every band (largest reached: " + percent(worstReferenceError) + ").",
+        "Reference: radiometry/reference/ path tracer, " + std::to_string(trace.paths) + " paths in " +
+            formatNumber(trace.seconds) + " s; every point traced until its standard error is under " +
+            percent(wantedError) + " of E in every band (largest reached: " + percent(trace.worstError) + ").",
         "Targets (issue 14): every method within 1% mean and 3% worst; hierarchical within 0.5% / 1.5% in under 0.12 s,",
         "and within 0.2% at a finer setting in under 3.4 s (the last row: the default link tolerance on patches of a third of the",
         "default area, timed as the rows above).",

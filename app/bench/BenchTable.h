@@ -38,6 +38,7 @@ BenchTable benchSolvers(const BenchOptions& options);      ///< each method to r
 BenchTable benchHierarchical(const BenchOptions& options);  ///< hierarchical radiosity at 10k, 100k, 1M elements
 BenchTable benchHierarchicalPeers(const BenchOptions& options);  ///< against RenderPark and SPLASH-2 at their sizes
 BenchTable benchAccuracy(const BenchOptions& options);     ///< each method at its defaults against the path tracer
+BenchTable benchAccuracySquareBlocks(const BenchOptions& options);  ///< the same on a box with its blocks square to the walls
 BenchTable benchHierarchicalAccuracy(const BenchOptions& options);  ///< at points, by link tolerance, RenderPark at equal accuracy
 BenchTable benchHemicube(const BenchOptions& options);     ///< GPU hemicubes per second (needs a display)
 BenchTable benchFrames(const BenchOptions& options);       ///< frame time, solver idle and running (needs a display)
