@@ -252,7 +252,9 @@ void ProbePanel::drawReadings(const Scene& scene, const ProbeReading& reading) {
     if (ImGui::IsItemHovered())
         ImGui::SetTooltip("Irradiance gathered at this point: the solver's patch radiosities, each read with the slope\n"
                           "its neighbours on the same face show (limited, its mean kept), seen through\n"
-                          "Lambert's exact point-to-polygon form factors, with ray-cast visibility");
+                          "Lambert's exact point-to-polygon form factors, with ray-cast visibility (16 x 16 rays\n"
+                          "where a patch is seen in part); on the patches near the point the light the lamps send\n"
+                          "is traced to each gather point, so a shadow's edge across a patch is read where it lies");
     rgbRow("rho", "", material.reflectance);
     // The radiosity equation at this point: what leaves is what is emitted plus what is reflected.
     rgbRow("B = M+rho E", "W/m\xC2\xB2", reading.radiosity.value());

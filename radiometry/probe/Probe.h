@@ -25,11 +25,13 @@
 #include <optional>
 #include <span>
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
 #include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
+#include "radiometry/probe/PolygonSamples.h"
 #include "radiometry/scene/Scene.h"
 #include "radiometry/sources/DirectLighting.h"
 #include "radiometry/units/Quantity.h"
@@ -40,9 +42,17 @@ class RayCaster;
 
 struct ProbeOptions {
     int gatherRaysPerSide = 4;  ///< irradiance: k x k stratified rays to each patch that x sees
+    /// irradiance: k x k rays again to a patch the first ones see only in part (Probe.cpp); 0: none
+    int partialRaysPerSide = 16;
     /// irradiance: weigh each patch's radiosity with a slope fitted to its neighbours (Probe.cpp)
     /// instead of as a constant; needs the rays above (their points give the kernel's moment)
     bool gatherSlopes = true;
+    /// irradiance: within each patch near the point, the light the emitters (in a scene of at most 16
+    /// emitting faces) and the lights send to each of the gather's points (shadow rays) in place of the
+    /// patch's mean direct part, so a shadow's edge across a patch is read where it lies (Probe.cpp);
+    /// needs the rays above
+    bool gatherDirect = true;
+    int directRaysPerSide = 4;  ///< gatherDirect: k x k rays to each emitting face from each point
     int targetRaysPerSide = 8;  ///< target readings: k x k rays to each patch of the target
     std::uint64_t seed = 1;     ///< the jitter is deterministic for a seed
     /// How far from a face's plane a point may lie and still be on it, relative to the scene's size.
@@ -134,6 +144,21 @@ private:
     PatchLocator locator_;
     DirectLighting lighting_;
     double sceneSize_ = 1;
+    /// The emitting faces (triangles and quads; larger faces fanned) with their exitance, for
+    /// gatherDirect; none in a scene with more than a few (Probe.cpp).
+    struct Emitter {
+        PatchPolygon polygon;
+        Rgb exitance{0.0};
+    };
+    std::vector<Emitter> emitters_;
+    /// Direct irradiance at y (normal n) from the emitters and the punctual lights, with shadow rays.
+    [[nodiscard]] Rgb directAt(const glm::dvec3& y, const glm::dvec3& n, std::uint64_t seed,
+                               std::vector<PolygonSample>& scratch) const;
+    /// directAt at the gather's points of patch j (`atSamples`), and its area-weighted mean.
+    [[nodiscard]] Rgb directOverSamples(std::size_t j, std::vector<Rgb>& atSamples, std::vector<PolygonSample>& points,
+                                        std::vector<PolygonSample>& scratch) const;
+    /// The seed of patch j's gather points (the same for every reading).
+    [[nodiscard]] std::uint64_t gatherSeed(std::size_t j) const { return mixBits(options_.seed ^ mixBits(j)); }
     /// Each patch's neighbours for the gather's linear reconstruction (patches of the same surface and
     /// face sharing a corner with it), compressed: patch j's are neighbours_[neighbourFirst_[j] ..
     /// neighbourFirst_[j + 1]).
