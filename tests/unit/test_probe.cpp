@@ -195,7 +195,8 @@ TEST_CASE("the gather reads a hard shadow's edge across a patch: a plate's shado
     for (std::size_t p = 0; p < mesh.size(); ++p) {
         if (mesh.patches[p].surface != 0) continue;
         double x0 = 1, x1 = -1;
-        for (const glm::dvec3& v : mesh.polygon(p).corners()) {
+        const PatchPolygon polygon = mesh.polygon(p);  // corners() views the polygon: keep it alive
+        for (const glm::dvec3& v : polygon.corners()) {
             x0 = std::min(x0, v.x);
             x1 = std::max(x1, v.x);
         }
