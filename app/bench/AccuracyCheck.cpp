@@ -114,6 +114,11 @@ std::string signedPercent(double fraction) {
     return text;
 }
 
+AccuracyTarget accuracyTarget(SolverMethod method) {
+    if (method == SolverMethod::Hierarchical) return {0.005, 0.015, "0.5% / 1.5%"};
+    return {};
+}
+
 ReferenceTrace traceReferences(const Scene& scene, const RayCaster& rays, std::vector<AccuracyPoint>& points,
                                double wantedError, std::chrono::duration<double> perPoint) {
     ReferenceTrace trace;

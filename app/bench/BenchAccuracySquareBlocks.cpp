@@ -82,15 +82,12 @@ BenchTable benchAccuracySquareBlocks(const BenchOptions& options) {
         for (const AccuracyPoint& point : points) reading.push_back(probe.measure(point.at.point, point.at.normal, solver->solution()));
         readings.push_back(reading);
         const MethodErrors errors = errorsAgainstReference(points, reading);
-        const bool hierarchical = info.method == SolverMethod::Hierarchical;
-        const double meanTarget = hierarchical ? 0.005 : 0.01, worstTarget = hierarchical ? 0.015 : 0.03;
-        const bool accurate = errors.meanB <= meanTarget && errors.worstB <= worstTarget &&
-                              errors.meanE <= meanTarget && errors.worstE <= worstTarget;
-        std::string verdict = accurate ? "met" : "missed";
+        const AccuracyTarget target = accuracyTarget(info.method);
+        std::string verdict = target.met(errors) ? "met" : "missed";
         if (residual > tolerance) verdict += " (residual " + formatNumber(residual, 2) + " after the budget)";
         table.rows.push_back({std::string(info.name), std::to_string(mesh.size()), formatNumber(seconds), percent(errors.meanB),
                               percent(errors.worstB) + " (" + errors.worstBAt + ")", percent(errors.meanE),
-                              percent(errors.worstE), hierarchical ? "0.5% / 1.5%" : "1% / 3%", verdict});
+                              percent(errors.worstE), target.text, verdict});
     }
     table.notes = {
         "The built-in Cornell box with both blocks turned about their vertical axes until their sides are square to the walls",

@@ -15,6 +15,7 @@
 #include "radiometry/common/Error.h"
 #include "radiometry/formfactor/FormFactor.h"
 #include "radiometry/geometry/RayCaster.h"
+#include "radiometry/mesh/ConvexFan.h"
 #include "radiometry/probe/ChordError.h"
 #include "radiometry/probe/PolygonSamples.h"
 #include "radiometry/probe/RadiosityInterpolation.h"
@@ -237,13 +238,12 @@ Probe::Probe(const Scene& scene, const PatchMesh& mesh, const RayCaster* rays, c
         const Material& material = scene.materials.at(surface.material);
         if (!material.emits()) continue;
         for (const Face& face : surface.faces)
-            for (std::size_t k = 1; k + 1 < face.vertices.size(); k += 2) {  // a quad at a time, then a triangle
-                const std::size_t corners = k + 2 < face.vertices.size() ? 4 : 3;
-                std::array<glm::dvec3, 4> fan{face.vertices[0], face.vertices[k], face.vertices[k + 1],
-                                              corners == 4 ? face.vertices[k + 2] : glm::dvec3(0.0)};
-                const PatchPolygon polygon = PatchPolygon::from(std::span<const glm::dvec3>(fan.data(), corners));
+            detail::forEachFanPiece(face.vertices.size(), [&](std::size_t first, std::size_t count) {
+                std::array<glm::dvec3, 4> corners{face.vertices[0]};
+                for (std::size_t i = 1; i < count; ++i) corners[i] = face.vertices[first + i - 1];
+                const PatchPolygon polygon = PatchPolygon::from(std::span<const glm::dvec3>(corners.data(), count));
                 if (polygon.area > 0) emitters_.push_back({polygon, material.exitance.value()});
-            }
+            });
     }
     // Every gather point of a near patch casts rays to every emitting face: a lamp made of many
     // triangles would make a reading take seconds. Its light then stays in the part read by the
@@ -413,10 +413,9 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
     const bool direct = options_.gatherDirect && rays_ != nullptr && options_.gatherRaysPerSide > 0 &&
                         (!emitters_.empty() || !lighting_.empty());
     std::vector<Rgb> indirect;
-    std::vector<std::uint8_t> known;
     std::vector<Rgb> meanDirect;
-    std::vector<std::vector<Rgb>> directAtSamples;
-    std::vector<double> sampleWeights;
+    std::vector<std::vector<Rgb>> directAtSamples;  // empty: patch not prepared yet
+    std::vector<std::vector<double>> nearWeights;   // the near patches' sample weights, from the first pass
     std::vector<PolygonSample> points, scratch;
     const auto reflectance = [&](std::size_t j) -> const Rgb& {
         return scene_.materials[scene_.surfaces[mesh_.patches[j].surface].material].reflectance;
@@ -424,12 +423,10 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
     const auto prepare = [&](std::size_t j) {
         if (indirect.empty()) {
             indirect.assign(radiosity.begin(), radiosity.end());
-            known.assign(radiosity.size(), 0);
             meanDirect.assign(radiosity.size(), Rgb(0.0));
             directAtSamples.assign(radiosity.size(), {});
         }
-        if (known[j]) return;
-        known[j] = 1;
+        if (!directAtSamples[j].empty()) return;
         meanDirect[j] = directOverSamples(j, directAtSamples[j], points, scratch);
         indirect[j] = radiosity[j] - reflectance(j) * meanDirect[j];
     };
@@ -448,13 +445,18 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
         // Nor does a patch whose plane holds x (a double-sided face's twin under x): x sees it edge-on.
         if (!inFrontOfPlane(polygon, at.point)) continue;
         formFactors[j] = pointToPolygonFormFactor(at.point, up, polygon.corners());
-        if (formFactors[j] > 0 && !coarse.empty())
-            coarse[j] = visibleFractions(at.point, up, polygon, *rays_, options_.gatherRaysPerSide, gatherSeed(j), samples);
+        if (!(formFactors[j] > 0) || coarse.empty()) continue;
+        // A patch near x (its kernel varies across it) is read with its direct light at each of these
+        // points, weighed by their share here.
+        const glm::dvec3 toPatch = patch.centroid - at.point;
+        const bool near = direct && glm::dot(toPatch, toPatch) < kDirectNearDistanceSquaredOverArea * patch.area;
+        if (near && nearWeights.empty()) nearWeights.assign(mesh_.patches.size(), {});
+        coarse[j] = visibleFractions(at.point, up, polygon, *rays_, options_.gatherRaysPerSide, gatherSeed(j), samples,
+                                     near ? &nearWeights[j] : nullptr);
     }
     for (std::size_t j = 0; j < mesh_.patches.size(); ++j) {
         const double f = formFactors[j];
         if (f <= 0) continue;
-        const Patch& patch = mesh_.patches[j];
         const Rgb& b = radiosity[j];
         if (coarse.empty()) {
             sum += b * f;
@@ -463,12 +465,8 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
         const PatchPolygon polygon = mesh_.polygon(j);
         const std::span<const std::uint32_t> around =
             std::span<const std::uint32_t>(neighbours_).subspan(neighbourFirst_[j], neighbourFirst_[j + 1] - neighbourFirst_[j]);
-        // A patch near x (its kernel varies across it) is read with its direct light at each sample;
-        // its coarse points again, for their weights.
-        const glm::dvec3 toPatch = patch.centroid - at.point;
-        const bool near = direct && glm::dot(toPatch, toPatch) < kDirectNearDistanceSquaredOverArea * patch.area;
+        const bool near = !nearWeights.empty() && !nearWeights[j].empty();
         VisibleFractions visible = coarse[j];
-        if (near) (void)visibleFractions(at.point, up, polygon, *rays_, options_.gatherRaysPerSide, gatherSeed(j), samples, &sampleWeights);
         // A patch x sees only in part (a shadow's edge crosses it as seen from x: the lamp behind a
         // block's top edge) is sampled again more finely: 4 x 4 rays read such a patch's visible share
         // 6-11% off, and where it is the lamp that was a floor point's whole error (session 21: -2.0 /
@@ -490,8 +488,8 @@ IrradianceRgb Probe::irradiance(const SurfacePoint& at, const glm::dvec3& n, std
             prepare(j);
             for (const std::uint32_t k : around) prepare(k);
             Rgb variation(0.0);
-            for (std::size_t i = 0; i < samples.size(); ++i)
-                if (sampleWeights[i] > 0) variation += sampleWeights[i] * (directAtSamples[j][i] - meanDirect[j]);
+            for (std::size_t i = 0; i < nearWeights[j].size(); ++i)
+                if (nearWeights[j][i] > 0) variation += nearWeights[j][i] * (directAtSamples[j][i] - meanDirect[j]);
             weighed += reflectance(j) * variation;
             if (options_.gatherSlopes) {
                 const std::array<glm::dvec3, 3> g = radiositySlope(mesh_, indirect, j, around);
