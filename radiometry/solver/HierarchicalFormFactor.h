@@ -643,6 +643,56 @@ inline glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
 /// Strata per dimension in one set of rays; larger sets are cast as several sets.
 inline constexpr int kMaxStrataPerSet = 256;
 
+/// pointOn with the map's terms worked out once, for the many points of one set of rays: the bilinear
+/// map as c0 + u (c1 - c0) + v (c3 - c0) + uv (c0 - c1 + c2 - c3), the triangle's square-root warp as
+/// c0 + s (c1 - c0) + s v (c2 - c1), s = sqrt(u).
+class ElementPoints {
+public:
+    explicit ElementPoints(const PatchPolygon& p) : quad_(p.count == 4), origin_(p.vertices[0]) {
+        const auto& c = p.vertices;
+        du_ = c[1] - c[0];
+        dv_ = quad_ ? c[3] - c[0] : c[2] - c[1];
+        duv_ = quad_ ? c[0] - c[1] + c[2] - c[3] : glm::dvec3(0.0);
+    }
+    [[nodiscard]] glm::dvec3 at(double u, double v) const {
+        if (quad_) return origin_ + u * du_ + v * dv_ + (u * v) * duv_;
+        const double s = std::sqrt(u);
+        return origin_ + s * du_ + (s * v) * dv_;
+    }
+
+private:
+    bool quad_;
+    glm::dvec3 origin_, du_{0.0}, dv_{0.0}, duv_{0.0};
+};
+
+/// A random permutation of 0 .. n-1 (n <= kMaxStrataPerSet) by Fisher-Yates, each index drawn from a
+/// 32-bit word of a hash of `seed` by multiply-shift, the product's low half left for the next draws
+/// while at least 16 bits of it remain (D. Lemire, "Fast random integer generation in an interval",
+/// ACM TOMACS 2019), instead of a hash per swap: the rows cast ~300k sets of a few rays, and their
+/// sampling cost about as much as Embree's traversal of the rays.
+inline void shuffledStrata(std::uint8_t* order, int n, std::uint64_t seed) {
+    for (int k = 0; k < n; ++k) order[k] = static_cast<std::uint8_t>(k);
+    std::uint64_t bits = mix(seed);
+    std::uint64_t word = bits & 0xffffffffu, used = 1;
+    bool spareHalf = true;  // bits' upper half not yet used
+    for (int k = n - 1; k > 0; --k) {
+        const auto bound = static_cast<std::uint64_t>(k + 1);
+        if (used * bound > (std::uint64_t{1} << 16)) {
+            if (!spareHalf) {
+                seed += 0x9E3779B97F4A7C15ull;
+                bits = mix(seed);
+            }
+            word = spareHalf ? bits >> 32 : bits & 0xffffffffu;
+            spareHalf = !spareHalf;
+            used = 1;
+        }
+        used *= bound;
+        const std::uint64_t product = word * bound;
+        word = product & 0xffffffffu;
+        std::swap(order[k], order[static_cast<std::size_t>(product >> 32)]);
+    }
+}
+
 /// One set of `rays` (at most kMaxStrataPerSet) stratified rays (see elementVisibility), added to
 /// `seen` and `total` (kernel weights) and `through` (rays that got through).
 inline void castVisibilitySet(double& seen, double& total, int& through, const PatchPolygon& a, const PatchPolygon& b,
@@ -652,32 +702,29 @@ inline void castVisibilitySet(double& seen, double& total, int& through, const P
     // plus one offset for every ray of the set: parallel rays, which see a penumbra as a point of the
     // source does (a Cornell box floor patch that sees 4.8% of the lamp read 0 with 64 rays).
     std::array<std::array<std::uint8_t, kMaxStrataPerSet>, 3> strata;
-    for (std::size_t d = 0; d < 3; ++d) {
-        auto& order = strata[d];
-        for (int k = 0; k < rays; ++k) order[static_cast<std::size_t>(k)] = static_cast<std::uint8_t>(k);
-        for (int k = rays - 1; k > 0; --k) {  // Fisher-Yates, the index by Lemire's multiply-shift
-            const std::uint64_t bits = mix(seed ^ (0x6a09e667ull * (d + 1)) ^ (static_cast<std::uint64_t>(k) << 32));
-            const auto j = static_cast<std::size_t>(((bits >> 32) * static_cast<std::uint64_t>(k + 1)) >> 32);
-            std::swap(order[static_cast<std::size_t>(k)], order[j]);
-        }
-    }
-    const double inverse = 1.0 / rays;
+    for (std::size_t d = 0; d < 3; ++d) shuffledStrata(strata[d].data(), rays, seed ^ (0x6a09e667ull * (d + 1)));
+    const ElementPoints onA(a), onB(b);
     constexpr double kInset = 1e-4;  // of the element's parameter range
-    const auto stratum = [&](int i, std::uint64_t bits) { return kInset + (1 - 2 * kInset) * (i + unitInterval(bits)) * inverse; };
+    const double width = (1 - 2 * kInset) / rays;
+    // A ray's four jitters are the four 16-bit quarters of one hash: 1/65536 of a stratum is finer
+    // than anything the rays resolve.
+    const auto stratum = [&](int i, std::uint64_t bits) {
+        return kInset + width * (i + static_cast<double>(bits & 0xffffu) * 0x1.0p-16);
+    };
     // The set's rays go to the caster together, in packets (RayCaster::occluded over spans).
     constexpr int kBatch = 16;
     std::array<glm::dvec3, kBatch> from, to;
-    std::array<double, kBatch> weights{};
-    std::array<bool, kBatch> blocked{};
+    std::array<double, kBatch> weights;
+    std::array<bool, kBatch> blocked;
     for (int first = 0; first < rays; first += kBatch) {
         const int count = std::min(kBatch, rays - first);
         for (int i = 0; i < count; ++i) {
             const int k = first + i;
             const auto j = static_cast<std::size_t>(i);
             const auto at = static_cast<std::size_t>(k);
-            const std::uint64_t h = seed + static_cast<std::uint64_t>(k) * 4;
-            from[j] = pointOn(a, stratum(k, mix(h)), stratum(strata[0][at], mix(h + 1)));
-            to[j] = pointOn(b, stratum(strata[1][at], mix(h + 2)), stratum(strata[2][at], mix(h + 3)));
+            const std::uint64_t h = mix(seed + static_cast<std::uint64_t>(k) * 0xD1B54A32D192ED03ull);
+            from[j] = onA.at(stratum(k, h), stratum(strata[0][at], h >> 16));
+            to[j] = onB.at(stratum(strata[1][at], h >> 32), stratum(strata[2][at], h >> 48));
             // Each ray weighted by the point-to-point kernel: the share of the form factor, not of the
             // area pairs (they differ where a blocker sits close to one element, at a block's foot).
             const glm::dvec3 d = to[j] - from[j];

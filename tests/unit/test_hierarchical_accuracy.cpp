@@ -8,7 +8,9 @@
 #include "tests/support/PenumbraPlates.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
 #include <string>
 #include <utility>
@@ -94,19 +96,22 @@ void forEachPenumbraSolve(const Scene& scene, Check&& check) {
 TEST_SUITE("hierarchical") {
 
 TEST_CASE("hierarchical visibility: a half-blocked and a quarter-blocked pair, estimated without bias") {
-    for (const bool quadrant : {false, true}) {
+    // 1 and 2 rays too: the patch rows read their faintest terms so (dimTermRays).
+    for (const bool quadrant : {false, true})
+    for (const int rays : {1, 2, 4}) {
         CAPTURE(quadrant);
+        CAPTURE(rays);
         const Scene scene = platesWithBlocker(true, quadrant, 1, 0.5);
         const RayCaster caster(scene);
         const PatchPolygon lower = makeElementPolygon(scene.surfaces[0].faces[0].vertices);
         const PatchPolygon upper = makeElementPolygon(scene.surfaces[1].faces[0].vertices);
         const double expected = quadrant ? 0.75 : 0.5;
-        // Each estimate is 4 rays; their mean over many pairs' seeds converges to the true fraction
+        // Each estimate is a few rays; their mean over many pairs' seeds converges to the true fraction
         // only if the estimator is unbiased (a fixed stratification pattern is not, for such blockers).
-        const int trials = 4000;
+        const int trials = 16000;
         double sum = 0, sumSquares = 0;
         for (int seed = 0; seed < trials; ++seed) {
-            const double v = hierarchical::elementVisibility(upper, lower, caster, 4, hierarchical::mix(seed + 17));
+            const double v = hierarchical::elementVisibility(upper, lower, caster, rays, hierarchical::mix(seed + 17));
             sum += v;
             sumSquares += v * v;
         }
@@ -115,6 +120,60 @@ TEST_CASE("hierarchical visibility: a half-blocked and a quarter-blocked pair, e
         MESSAGE("visible fraction " << mean << " +- " << standardError << ", exact " << expected);
         CHECK(std::abs(mean - expected) < 4 * standardError + 1e-3);
         CHECK(mean == doctest::Approx(expected).scale(0).epsilon(0.02));
+    }
+}
+
+TEST_CASE("hierarchical visibility: the sets' strata are paired by uniformly random permutations") {
+    // Each ray's point is uniform over its element only if every stratum is equally likely at every
+    // place of the permutation (probability 1/n), and the pairings vary as much as they can only if
+    // every permutation is equally likely (1/n! for n = 4). Chi-square against those closed forms,
+    // at a threshold a uniform generator exceeds with probability under 1e-4.
+    for (const int n : {2, 4, 8, 56, 256}) {
+        CAPTURE(n);
+        const int trials = 20000;
+        std::vector<int> counts(static_cast<std::size_t>(n * n), 0);
+        std::vector<int> orders(24, 0);
+        std::array<std::uint8_t, hierarchical::kMaxStrataPerSet> order{};
+        int notPermutations = 0;
+        for (int t = 0; t < trials; ++t) {
+            hierarchical::shuffledStrata(order.data(), n, hierarchical::mix(static_cast<std::uint64_t>(t) + 99));
+            std::vector<bool> seen(static_cast<std::size_t>(n), false);
+            bool permutation = true;
+            for (int k = 0; k < n; ++k) {
+                const std::uint8_t stratum = order[static_cast<std::size_t>(k)];
+                permutation = permutation && stratum < n && !seen[stratum];
+                if (stratum >= n) continue;
+                seen[stratum] = true;
+                ++counts[static_cast<std::size_t>(k * n + stratum)];
+            }
+            notPermutations += permutation ? 0 : 1;
+            if (n == 4) {
+                int code = 0;  // the permutation's rank among the 24 (Lehmer code)
+                for (int k = 0; k < 4; ++k) {
+                    int smaller = 0;
+                    for (int j = k + 1; j < 4; ++j) smaller += order[static_cast<std::size_t>(j)] < order[static_cast<std::size_t>(k)];
+                    code = code * (4 - k) + smaller;
+                }
+                ++orders[static_cast<std::size_t>(code)];
+            }
+        }
+        // Each row of counts is multinomial over n cells: chi-square with n - 1 degrees of freedom
+        // per row; the rows are dependent, but their sum's mean is n (n - 1) and its spread near the
+        // independent case's. Threshold: mean + 5 standard deviations of the independent sum.
+        CHECK(notPermutations == 0);
+        const double expected = static_cast<double>(trials) / n;
+        double chi2 = 0;
+        for (const int c : counts) chi2 += (c - expected) * (c - expected) / expected;
+        const double dof = static_cast<double>(n) * (n - 1);
+        MESSAGE("places x strata chi-square " << chi2 << " for " << dof << " degrees of freedom");
+        CHECK(chi2 < dof + 5 * std::sqrt(2 * dof));
+        if (n == 4) {
+            const double each = trials / 24.0;
+            double chi2Orders = 0;
+            for (const int c : orders) chi2Orders += (c - each) * (c - each) / each;
+            MESSAGE("the 24 permutations' chi-square " << chi2Orders << " for 23 degrees of freedom");
+            CHECK(chi2Orders < 23 + 5 * std::sqrt(46.0));
+        }
     }
 }
 
