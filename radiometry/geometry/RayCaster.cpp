@@ -358,7 +358,7 @@ void occludedPacket(RTCScene scene, const TriangleTable& table, std::span<const 
         const double length = glm::length(segment);
         if (!(length > 0)) continue;  // an empty segment meets nothing
         const double epsilon = std::min(table.planeTolerance, kRelativeSegmentEpsilon * length);
-        const glm::dvec3 origin = a[i] - table.origin, direction = segment / length;
+        const glm::dvec3 origin = a[i] - table.origin, direction = segment * (1.0 / length);
         rays.org_x[i] = static_cast<float>(origin.x);
         rays.org_y[i] = static_cast<float>(origin.y);
         rays.org_z[i] = static_cast<float>(origin.z);
@@ -378,6 +378,20 @@ void occludedPacket(RTCScene scene, const TriangleTable& table, std::span<const 
     for (std::size_t i = 0; i < a.size(); ++i) blocked[i] = valid[i] != 0 && rays.tfar[i] < 0;
 }
 
+/// One segment through rtcOccluded1: a packet's set-up and 4-wide traversal for a single ray cost
+/// more than the ray (sets of one ray are common: faint terms of the hierarchical rows).
+bool occludedSingle(RTCScene scene, const TriangleTable& table, const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 segment = b - a;
+    const double length = glm::length(segment);
+    if (!(length > 0)) return false;
+    const double epsilon = std::min(table.planeTolerance, kRelativeSegmentEpsilon * length);
+    QueryContext context = makeContext(table, a, b, true);
+    RTCRay ray{};
+    setRay(ray, a - table.origin, segment * (1.0 / length), epsilon, length - epsilon);
+    rtcOccluded1(scene, &context.embree, &ray);
+    return ray.tfar < 0;  // Embree marks an occluded ray by setting tfar to -infinity
+}
+
 } // namespace
 
 void RayCaster::occluded(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<bool> blocked) const {
@@ -388,7 +402,9 @@ void RayCaster::occluded(std::span<const glm::dvec3> a, std::span<const glm::dve
         const std::size_t count = std::min(kWidth, a.size() - first);
         RTCScene scene = impl_->occluderScene ? impl_->occluderScene : impl_->scene;
         const TriangleTable& table = impl_->occluderScene ? impl_->occluders : *impl_;
-        if (count <= 4)
+        if (count == 1)
+            blocked[first] = occludedSingle(scene, table, a[first], b[first]);
+        else if (count <= 4)
             occludedPacket<RTCRay4, 4>(scene, table, a.subspan(first, count), b.subspan(first, count), blocked.subspan(first, count));
         else
             occludedPacket<RTCRay8, 8>(scene, table, a.subspan(first, count), b.subspan(first, count), blocked.subspan(first, count));
