@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include <glm/geometric.hpp>
@@ -97,15 +98,33 @@ constexpr int kTermVisibilityRays = 8;
 /// 8 and 4 gave the bench's points the same errors (0.24% / 1.1% mean / worst at seed 1), and such
 /// terms are most of the rows' rays.
 constexpr int kDimTermVisibilityRays = 4;
+/// Rays for a dim term of a patch row by the share w of the patch's irradiance it brings (see
+/// `shareOfIrradiance` in buildPatchRows): the error its visibility leaves in the patch's irradiance
+/// has variance w^2 v (1 - v) / n for n rays and a visible share v, so for a given number of rays the
+/// row's variance is least with n in proportion to w (J. Neyman's allocation, "On the two different
+/// aspects of the representative method", J. Royal Statistical Society 1934). Four rays for every dim
+/// term spent 42% of the Cornell box's dim sets on terms under 0.1% of the patch's light, which hold
+/// 2% of it. With one ray under kFaintTerm and two under kDimTerm the patches moved from converged
+/// Gauss-Seidel (64 rays) by 0.605% -> 0.640% on average over 12 seeds, for 14% less CPU
+/// (docs/ARCHITECTURE.md, "Accuracy", item 22). One ray reads the plain share of area pairs, not the
+/// kernel-weighted one (a single weight cancels): they differ near a blocker's foot, in terms that
+/// hold a thousandth of the patch's light each.
+constexpr double kFaintTerm = 1e-3;
+constexpr double kDimTerm = 3e-3;
+int dimTermRays(double share) { return share < kFaintTerm ? 1 : share < kDimTerm ? 2 : kDimTermVisibilityRays; }
 /// Rays a bright term (a piece of the lamp) casts from the patch after its first kTermVisibilityRays
-/// found `seen` of it: 56 more where it is in a penumbra (its link partly visible, or the rays
-/// disagreeing with each other or with the link's own verdict), 24 more where the link's rays found the
-/// source hidden and so did the patch's (a sliver of the lamp in sight: 24 rays find a share of 8% 86%
-/// of the time), none where the patch's rays confirm a fully visible link. Eight rays alone left the
-/// Cornell box's floor patches in the blocks' penumbrae 20-70% off converged Gauss-Seidel, some
-/// always dark (docs/ARCHITECTURE.md, "Accuracy", item 16).
-int penumbraRays(const Link& link, float share, double seen) {
-    if (partlyVisible(link, share) || (seen > 0 && seen < 1) || (link.formFactor > 0 && seen != static_cast<double>(share))) return 56;
+/// found `seen` of it: where it is in a penumbra (its link partly visible, or the rays disagreeing with
+/// each other or with the link's own verdict) 56 more for a term that brings the patch kFullPenumbra of
+/// its light or more, fewer in proportion to its share below that (at least 8, by the same allocation
+/// as dimTermRays); 24 more where the link's rays found the source hidden and so did the patch's (a
+/// sliver of the lamp in sight: 24 rays find a share of 8% 86% of the time), none where the patch's
+/// rays confirm a fully visible link. Eight rays alone left the Cornell box's floor patches in the
+/// blocks' penumbrae 20-70% off converged Gauss-Seidel, some always dark (docs/ARCHITECTURE.md,
+/// "Accuracy", item 16).
+constexpr double kFullPenumbra = 0.1;
+int penumbraRays(const Link& link, float share, double seen, double ofIrradiance) {
+    if (partlyVisible(link, share) || (seen > 0 && seen < 1) || (link.formFactor > 0 && seen != static_cast<double>(share)))
+        return std::max(8, static_cast<int>(std::lround(56 * std::min(1.0, ofIrradiance / kFullPenumbra))));
     return link.formFactor <= 0 ? 24 : 0;
 }
 /// A link whose receiver is more than this many times the patch's area gives the patch no share of
@@ -282,17 +301,21 @@ void HierarchicalSolver::buildPatchRows() {
         // A source that brings the patch much of its light (the lamp's pieces) is seen through the
         // patch's own rays whatever its link's verdict: four rays that all got through, or were all
         // blocked, call a penumbra lit or dark for the whole of a receiver larger than the patch.
-        const auto bright = [&](ElementIndex term, const PatchPolygon& q) {
-            // The point kernel between the centroids stands in for the term's form factor.
+        // The share of the patch's irradiance a term brings, roughly: the point kernel between the
+        // centroids stands in for its form factor.
+        const auto shareOfIrradiance = [&](ElementIndex term, const PatchPolygon& q) {
             const glm::dvec3 d = q.centroid - patchPolygon->centroid;
             const double r2 = glm::dot(d, d);
             const double cosines = std::max(0.0, glm::dot(patchPolygon->normal, d)) * std::max(0.0, -glm::dot(q.normal, d));
-            return maxBand(radiosity[term]) * q.area * cosines > kBrightHidden * patchIrradiance * std::numbers::pi * r2 * r2;
+            const double brought = maxBand(radiosity[term]) * q.area * cosines;
+            const double whole = patchIrradiance * std::numbers::pi * r2 * r2;
+            return whole > 0 ? brought / whole : brought > 0 ? std::numeric_limits<double>::infinity() : 0.0;
         };
         const auto visibility = [&](std::uint32_t link, ElementIndex term, const PatchPolygon& q) {
             const bool own = !partlyVisible(links_[link], linkShare_[link]) && links_[link].formFactor > 0 &&
                              tree_.area(links_[link].receiver) <= kLargeReceiver * patchPolygon->area;
-            const bool lamp = bright(term, q);
+            const double share = shareOfIrradiance(term, q);
+            const bool lamp = share > kBrightHidden;
             if (caster_ == nullptr || (own && !lamp)) return static_cast<double>(linkShare_[link]);
             // No face can block a segment between the link's receiver and its source (which holds the
             // term): every point of the receiver sees all of the term, no ray needed. The row takes
@@ -307,8 +330,8 @@ void HierarchicalSolver::buildPatchRows() {
             double& known = termVisibility[term];
             if (known < 0) {
                 const std::uint64_t seed = hierarchical::mix(patchSeed ^ static_cast<std::uint64_t>(term));
-                known = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : kDimTermVisibilityRays, seed);
-                const int more = lamp ? penumbraRays(links_[link], linkShare_[link], known) : 0;
+                known = hierarchical::elementVisibility(*patchPolygon, q, *caster_, lamp ? kTermVisibilityRays : dimTermRays(share), seed);
+                const int more = lamp ? penumbraRays(links_[link], linkShare_[link], known, share) : 0;
                 if (more > 0) {
                     const double extra = hierarchical::elementVisibility(*patchPolygon, q, *caster_, more, hierarchical::mix(seed ^ 0x7e3a1ull));
                     known = (kTermVisibilityRays * known + more * extra) / (kTermVisibilityRays + more);
