@@ -145,7 +145,6 @@ struct ShotGeometry {
     std::vector<double> shooterRadius;  ///< farthest corner from the shooter's centroid, m
     std::vector<double> patchRadius;    ///< the same for each patch
     ProgressiveShooters groups;
-    std::vector<std::uint32_t> timesShot;  ///< per group: a fresh jitter for every shot
     std::shared_ptr<const RayCaster> rays;  ///< the caller's (SolverOptions::rays) or our own
     FormFactorOptions options;
 };
@@ -180,13 +179,15 @@ struct ShotTargets {
     /// Each target's member's normal, for a group that is not planar (patch groups); empty: the
     /// shooter's one normal.
     std::vector<glm::dvec3> normal;
+    std::uint32_t shot = 0;  ///< the group's shot number (GroupShotFormFactors)
 };
 
 /// visibilityRays x kPenumbraRayFactor points (kLightShotTargetFactor for a light's shot) of the group, stratified over its members' share of the shot's power
 /// (by area when no share is given): stratum t falls in the member whose cumulative share covers
 /// it, at a u within that member proportional to where in its share it fell and a v from a
 /// permuted stratum, so a lone patch gets a jittered Latin hypercube.
-ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const double> memberPower, double powerShare) {
+ShotTargets shotTargets(const ShotGeometry& g, std::size_t group, std::uint32_t shot, std::span<const double> memberPower,
+                        double powerShare) {
     const auto members = g.groups.group(group);
     std::vector<double> cumulative(members.size());
     double total = 0;
@@ -199,10 +200,11 @@ ShotTargets shotTargets(ShotGeometry& g, std::size_t group, std::span<const doub
     const int factor = std::abs(powerShare) >= kLightShotShare ? kLightShotTargetFactor : kPenumbraRayFactor;
     const int n = std::max(1, g.options.visibilityRays * factor);
     const auto count = static_cast<std::uint64_t>(n);
-    std::uint64_t state = pairSeed(g.options.seed, group, g.timesShot[group]++);
+    std::uint64_t state = pairSeed(g.options.seed, group, shot);
     const std::uint64_t stride = coprimeStride(mix64(state), count);
     const std::uint64_t offset = mix64(state + 1) % count;
     ShotTargets targets;
+    targets.shot = shot;
     targets.points.reserve(count);
     targets.member.reserve(count);
     for (std::uint64_t t = 0; t < count; ++t) {
@@ -424,8 +426,9 @@ int penumbraRaysFor(const ShotTargets& targets, double powerShare) {
 /// leaves the group, is untouched; only the fraction of it that arrives changes. A member no
 /// segment reaches facing drops out of the sum. Returns `fallback` where no member does.
 /// Per band, the same members' fractions weighed by that band's shares (the rays follow the band sum).
-Rgb perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t receiver, std::span<const double> memberShare,
-                        std::span<const Rgb> bandShare, std::span<const double> memberWeight, int rays, const Rgb& fallback) {
+Rgb perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::uint32_t shot, std::size_t receiver,
+                        std::span<const double> memberShare, std::span<const Rgb> bandShare,
+                        std::span<const double> memberWeight, int rays, const Rgb& fallback) {
     const auto members = g.groups.group(shooter);
     double total = 0;
     Rgb bandTotal(0.0);
@@ -435,7 +438,9 @@ Rgb perMemberVisibility(const ShotGeometry& g, std::size_t shooter, std::size_t 
     }
     if (!(total > 0)) return fallback;
     const PatchPolygon& r = g.polygons[receiver];
-    const std::uint64_t seed = pairSeed(g.options.seed ^ 0x9e3779b97f4a7c15ULL, shooter * 1000003ULL + g.timesShot[shooter], receiver);
+    // shot + 1: the seeds these rays have always had (the count they read had been advanced by the
+    // shot's targets), so the numbers measured in the docs and tests stay.
+    const std::uint64_t seed = pairSeed(g.options.seed ^ 0x9e3779b97f4a7c15ULL, shooter * 1000003ULL + shot + 1, receiver);
     thread_local std::vector<glm::dvec3> to;
     Rgb sum(0.0), counted(0.0);
     // Member k's weight in each band, p_k per band (0 where the band holds no power).
@@ -559,7 +564,7 @@ Rgb receiverToShooter(const ShotGeometry& g, const ShotTargets& targets, std::si
     // per band.
     if (shot > 0 && shot < 1 && !memberWeight.empty()) {
         const int cast = fewRays < g.options.visibilityRays || penumbraRays <= fewRays ? fewRays : fewRays + penumbraRays;
-        visibility = perMemberVisibility(g, shooter, receiver, memberShare, bandShare, memberWeight, cast, visibility);
+        visibility = perMemberVisibility(g, shooter, targets.shot, receiver, memberShare, bandShare, memberWeight, cast, visibility);
     }
     return unoccluded * visibility;
 }
@@ -636,9 +641,9 @@ ShotFormFactors makeRayCastShotFormFactors(const Scene& scene, const PatchMesh& 
                                            const ProgressiveShooters& shooters, const SolverOptions& options) {
     GroupShotFormFactors byPower = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
     auto bands = std::make_shared<std::vector<Rgb>>();  // called from one thread at a time
-    return [byPower = std::move(byPower), bands](std::size_t shooter, std::span<double> toShooter) {
+    return [byPower = std::move(byPower), bands](std::size_t shooter, std::uint32_t shot, std::span<double> toShooter) {
         bands->resize(toShooter.size());
-        byPower(shooter, {}, 1.0, *bands);  // without power every band leaves by area alike
+        byPower(shooter, shot, {}, 1.0, *bands);  // without power every band leaves by area alike
         for (std::size_t j = 0; j < toShooter.size(); ++j) toShooter[j] = (*bands)[j].x;
     };
 }
@@ -660,13 +665,13 @@ GroupShotFormFactors makeRayCastGroupShotFormFactors(const Scene& scene, const P
     geometry->groups = shooters;
     for (const PatchPolygon& outline : shooters.polygons) geometry->shooterRadius.push_back(circumradius(outline));
     for (const PatchPolygon& patch : geometry->polygons) geometry->patchRadius.push_back(circumradius(patch));
-    geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
-    return [geometry](std::size_t shooter, std::span<const Rgb> memberPower, double powerShare, std::span<Rgb> toShooter) {
+    return [geometry](std::size_t shooter, std::uint32_t shot, std::span<const Rgb> memberPower, double powerShare,
+                      std::span<Rgb> toShooter) {
         const std::vector<double> power = bandSums(memberPower);
-        const ShotTargets targets = shotTargets(*geometry, shooter, power, powerShare);
+        const ShotTargets targets = shotTargets(*geometry, shooter, shot, power, powerShare);
         const std::vector<double> share = memberShares(*geometry, shooter, power);
         const std::vector<Rgb> bandShare = memberBandShares(memberPower, share);
         const int penumbraRays = penumbraRaysFor(targets, powerShare);
@@ -700,13 +705,13 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
     geometry->shooterSurface = shooters.surface;
     geometry->shooterFace = shooters.face;
     for (const PatchPolygon& outline : shooters.polygons) geometry->shooterRadius.push_back(circumradius(outline));
-    geometry->timesShot.assign(shooters.size(), 0);
     geometry->rays = options.rays ? options.rays : std::make_shared<const RayCaster>(scene);
     geometry->options = options.formFactors;
     geometry->options.seed = pairSeed(options.seed, options.formFactors.seed, 0);
     auto perPatch = std::make_shared<std::vector<Rgb>>(mesh.size());
     return [geometry, groups = std::move(groups), shooterGroups = shooters, perPatch](
-               std::size_t shooter, std::span<const Rgb> memberPower, double powerShare, std::span<Rgb> toShooter) {
+               std::size_t shooter, std::uint32_t shot, std::span<const Rgb> memberPower, double powerShare,
+               std::span<Rgb> toShooter) {
         const ShotGeometry& g = *geometry;
         std::vector<Rgb>& f = *perPatch;
         if (g.shooters[shooter].count > 0) {
@@ -726,7 +731,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
                     patchPower.push_back(groupShare * (g.patches[p].area / groups->area[members[k]]));
             }
             const std::vector<double> power = bandSums(patchPower);
-            const ShotTargets targets = shotTargets(*geometry, shooter, power, powerShare);
+            const ShotTargets targets = shotTargets(*geometry, shooter, shot, power, powerShare);
             const std::vector<double> share = memberShares(g, shooter, power);
             const std::vector<Rgb> bandShare = memberBandShares(patchPower, share);
             const int penumbraRays = penumbraRaysFor(targets, powerShare);
@@ -737,7 +742,7 @@ GroupShotFormFactors makeRayCastPatchGroupShotFormFactors(const Scene& scene, co
         } else {
             // One group that is not planar: its radiosity is uniform, so its light leaves its
             // members by area.
-            ShotTargets targets = shotTargets(*geometry, shooter, {}, powerShare);
+            ShotTargets targets = shotTargets(*geometry, shooter, shot, {}, powerShare);
             targets.normal.reserve(targets.member.size());
             const auto members = g.groups.group(shooter);
             for (const std::uint32_t k : targets.member) targets.normal.push_back(g.polygons[members[k]].normal);

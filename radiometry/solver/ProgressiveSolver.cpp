@@ -19,9 +19,9 @@ double bandSum(const Rgb& v) { return v.x + v.y + v.z; }
 ProgressiveSolver::ProgressiveSolver(PatchMaterials materials, ShotFormFactors formFactors)
     : materials_(std::move(materials)),
       formFactors_([f = std::move(formFactors), column = std::make_shared<std::vector<double>>()](
-                       std::size_t shooter, std::span<const Rgb>, double, std::span<Rgb> out) {
+                       std::size_t shooter, std::uint32_t shot, std::span<const Rgb>, double, std::span<Rgb> out) {
           column->resize(out.size());
-          f(shooter, *column);
+          f(shooter, shot, *column);
           for (std::size_t j = 0; j < out.size(); ++j) out[j] = Rgb((*column)[j]);
       }) {
     shooters_ = ProgressiveShooters::eachPatch(materials_.size());
@@ -49,6 +49,7 @@ void ProgressiveSolver::reset() {
     radiosity_ = materials_.source;
     unshot_ = materials_.source;
     irradiance_.assign(materials_.size(), Rgb(0.0));
+    timesShot_.assign(shooters_.size(), 0);
     stats_ = {};
     lastGroup_ = -1;
     rescan();
@@ -114,7 +115,7 @@ IterationStats ProgressiveSolver::step() {
         }
         toShooter_.assign(materials_.size(), Rgb(0.0));
         const double emitted = bandSum(materials_.emittedPower());
-        formFactors_(group, memberPower_, emitted > 0 ? nextShooterPower_ / emitted : 1.0, toShooter_);
+        formFactors_(group, timesShot_[group]++, memberPower_, emitted > 0 ? nextShooterPower_ / emitted : 1.0, toShooter_);
         const Rgb shot = shooterArea_[group] > 0 ? power / shooterArea_[group] : Rgb(0.0);
         for (std::size_t j = 0; j < toShooter_.size(); ++j) {
             if (toShooter_[j] == Rgb(0.0)) continue;

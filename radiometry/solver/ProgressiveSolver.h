@@ -23,7 +23,11 @@ namespace radiant {
 /// Fills toShooter[j] = F_{j -> shooter} (dimensionless) for every patch j; 0 for the shooter
 /// itself and for patches that cannot see it. Called from one thread at a time. `shooter` is a
 /// patch index, or with ProgressiveShooters a group index and F_{j -> group} to the whole group.
-using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double> toShooter)>;
+/// `shot` counts the shooter's earlier shots since the solve began (ProgressiveSolver::reset): with
+/// the shooter it seeds the shot's visibility rays, so a shooter shooting again draws fresh rays and
+/// a solve started over draws the same ones. A count kept inside the form factors outlived reset,
+/// and the lab's solve after Reset differed from its first (up to 25% on a penumbra patch).
+using ShotFormFactors = std::function<void(std::size_t shooter, std::uint32_t shot, std::span<double> toShooter)>;
 /// ShotFormFactors for a group, told where in it the light leaves from: memberPower[k] >= 0 per band
 /// is the share of the shot's unshot power held by the group's k-th patch in that band (all of them,
 /// over members and bands, sum to 1), so visibility can be sampled where the light is, not over parts
@@ -32,7 +36,7 @@ using ShotFormFactors = std::function<void(std::size_t shooter, std::span<double
 /// powerShare is the shot's unshot power as a fraction of the emitted power (band sums): a shot that
 /// carries much of the light (the light source's own) gets more visibility rays in penumbrae, since
 /// its noise is not averaged away by later shots.
-using GroupShotFormFactors = std::function<void(std::size_t group, std::span<const Rgb> memberPower,
+using GroupShotFormFactors = std::function<void(std::size_t group, std::uint32_t shot, std::span<const Rgb> memberPower,
                                                 double powerShare, std::span<Rgb> toShooter)>;
 
 class ProgressiveSolver final : public Solver {
@@ -67,7 +71,7 @@ public:
     /// Memory held by the per-patch and per-group arrays (not the shot kernel's ray caster).
     [[nodiscard]] std::size_t bytes() const override {
         return materials_.size() * (sizeof(double) * 2 + sizeof(Rgb) * 5 + sizeof(std::uint32_t)) +
-               shooters_.size() * (sizeof(std::uint32_t) * 3 + sizeof(PatchPolygon) + sizeof(double));
+               shooters_.size() * (sizeof(std::uint32_t) * 4 + sizeof(PatchPolygon) + sizeof(double));
     }
 
 private:
@@ -85,6 +89,7 @@ private:
     std::vector<Rgb> unshot_;      ///< W/m^2
     std::vector<Rgb> irradiance_;  ///< H: everything gathered so far, W/m^2; survives material edits
     std::vector<Rgb> toShooter_;
+    std::vector<std::uint32_t> timesShot_;  ///< per group, since reset: ShotFormFactors' `shot`
     std::size_t nextShooter_ = 0;  ///< a group
     double nextShooterPower_ = 0;  ///< sum over its patches of A |unshot B| summed over bands, W
     std::int64_t lastGroup_ = -1;

@@ -122,7 +122,7 @@ void checkProgressiveFurnace(const Scene& scene, const PatchMesh& mesh, std::sha
     std::vector<double> rowSum(groups->size(), 0.0);
     std::vector<Rgb> column(groups->size());
     for (std::size_t c = 0; c < shooters.size(); ++c) {
-        shot(c, std::vector<Rgb>{Rgb(1.0 / 3)}, 1.0, column);
+        shot(c, 0, std::vector<Rgb>{Rgb(1.0 / 3)}, 1.0, column);
         for (std::size_t d = 0; d < groups->size(); ++d) rowSum[d] += column[d].x;
     }
     double deviation = 0;

@@ -197,7 +197,7 @@ TEST_CASE("a block shot's bands leave from where each band's power is: per-band 
         options.formFactors.visibilityRays = 64;  // 256 targets: the bands' split, not the rays' noise
         const GroupShotFormFactors shot = makeRayCastGroupShotFormFactors(scene, mesh, shooters, options);
         std::vector<Rgb> column(mesh.size());
-        shot(block, memberPower, 0.1, column);
+        shot(block, 0, memberPower, 0.1, column);
         for (std::uint32_t j = mesh.surfaceFirstPatch[1]; j < mesh.surfaceFirstPatch[2]; ++j) {
             const glm::dvec3& c = mesh.patches[j].centroid;
             // Receivers over the block's middle, across the shadow's line: each sees part of the red

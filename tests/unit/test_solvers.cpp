@@ -68,7 +68,7 @@ struct HandBuilt {
         return std::make_shared<const FormFactorMatrix>(std::move(rows));
     }
     [[nodiscard]] ShotFormFactors shot() const {
-        return [factors = F](std::size_t shooter, std::span<double> toShooter) {
+        return [factors = F](std::size_t shooter, std::uint32_t, std::span<double> toShooter) {
             for (std::size_t j = 0; j < toShooter.size(); ++j) toShooter[j] = factors[j][shooter];
         };
     }
@@ -406,7 +406,7 @@ TEST_CASE("meshed furnace with the real kernel: every method reaches E/(1-rho) t
     const ShotFormFactors shot = makeRayCastShotFormFactors(box, mesh, {});
     std::vector<double> shotRowSums(mesh.size(), 0.0), column(mesh.size());
     for (std::size_t s = 0; s < mesh.size(); ++s) {
-        shot(s, column);
+        shot(s, 0, column);
         for (std::size_t j = 0; j < mesh.size(); ++j) shotRowSums[j] += column[j];
     }
     double shotDeviation = 0;
