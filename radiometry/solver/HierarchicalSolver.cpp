@@ -470,7 +470,9 @@ void HierarchicalSolver::setMaterial(std::size_t surface, const Rgb& reflectance
 }
 
 void HierarchicalSolver::reset() {
-    linksSettled_ = false;
+    // The links and rows stay as they are, settled or not (Solver::reset keeps the form factors):
+    // refining settled links again from B = E split elements the first solve had not, so a Reset
+    // and a second run moved most patches (the Cornell box at 0.004 m^2: worst 2.4%, importance 13%).
     refinedSinceChange_ = false;
     setLeavesToEmission();
     stats_ = {};
