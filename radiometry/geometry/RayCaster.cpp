@@ -329,18 +329,25 @@ std::optional<RayHit> RayCaster::nearestHit(const glm::dvec3& origin, const glm:
     return hit;
 }
 
-bool RayCaster::occluded(const glm::dvec3& a, const glm::dvec3& b) const {
+namespace {
+
+/// One segment through rtcOccluded1 (RayCaster::occluded; also a span of one segment, for which a
+/// packet's set-up and 4-wide traversal cost more than the ray: the hierarchical rows' faint terms).
+bool occludedSingle(RTCScene scene, const TriangleTable& table, const glm::dvec3& a, const glm::dvec3& b) {
     const glm::dvec3 segment = b - a;
     const double length = glm::length(segment);
     if (!(length > 0)) return false;
-    const double epsilon = std::min(impl_->planeTolerance, kRelativeSegmentEpsilon * length);
-    QueryContext context = makeContext(*impl_, a, b, true);
+    const double epsilon = std::min(table.planeTolerance, kRelativeSegmentEpsilon * length);
+    QueryContext context = makeContext(table, a, b, true);
     RTCRay ray{};
-    setRay(ray, a - impl_->origin, segment / length, epsilon, length - epsilon);
-    rtcOccluded1(impl_->scene, &context.embree, &ray);
-    // Embree marks an occluded ray by setting tfar to -infinity.
-    return ray.tfar < 0;
+    setRay(ray, a - table.origin, segment / length, epsilon, length - epsilon);
+    rtcOccluded1(scene, &context.embree, &ray);
+    return ray.tfar < 0;  // Embree marks an occluded ray by setting tfar to -infinity
 }
+
+} // namespace
+
+bool RayCaster::occluded(const glm::dvec3& a, const glm::dvec3& b) const { return occludedSingle(impl_->scene, *impl_, a, b); }
 
 namespace {
 
@@ -376,20 +383,6 @@ void occludedPacket(RTCScene scene, const TriangleTable& table, std::span<const 
     else
         rtcOccluded8(valid.data(), scene, &context.embree, &rays);
     for (std::size_t i = 0; i < a.size(); ++i) blocked[i] = valid[i] != 0 && rays.tfar[i] < 0;
-}
-
-/// One segment through rtcOccluded1: a packet's set-up and 4-wide traversal for a single ray cost
-/// more than the ray (sets of one ray are common: faint terms of the hierarchical rows).
-bool occludedSingle(RTCScene scene, const TriangleTable& table, const glm::dvec3& a, const glm::dvec3& b) {
-    const glm::dvec3 segment = b - a;
-    const double length = glm::length(segment);
-    if (!(length > 0)) return false;
-    const double epsilon = std::min(table.planeTolerance, kRelativeSegmentEpsilon * length);
-    QueryContext context = makeContext(table, a, b, true);
-    RTCRay ray{};
-    setRay(ray, a - table.origin, segment * (1.0 / length), epsilon, length - epsilon);
-    rtcOccluded1(scene, &context.embree, &ray);
-    return ray.tfar < 0;  // Embree marks an occluded ray by setting tfar to -infinity
 }
 
 } // namespace
