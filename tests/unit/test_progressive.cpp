@@ -386,7 +386,9 @@ TEST_CASE("reset starts a progressive solve over exactly: each shot draws the ra
     std::vector<std::pair<std::string, std::unique_ptr<Solver>>> solvers;
     solvers.emplace_back("block shooters", makeSolver(SolverMethod::Progressive, cornell, mesh, SolverOptions{}));
     solvers.emplace_back("patch groups", makeGroupedSolver(SolverMethod::Progressive, cornell, mesh, patchGroups, SolverOptions{}));
-    for (auto& [name, solver] : solvers) {
+    for (auto& entry : solvers) {
+        const std::string& name = entry.first;  // not a structured binding: clang 14 cannot capture one
+        std::unique_ptr<Solver>& solver = entry.second;
         CAPTURE(name);
         solveProgressiveTo(*solver, 1e-4, 20000);
         const std::vector<Rgb> first = solver->solution();
