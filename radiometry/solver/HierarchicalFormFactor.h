@@ -631,21 +631,13 @@ inline std::uint64_t mix(std::uint64_t z) {
 }
 inline double unitInterval(std::uint64_t bits) { return static_cast<double>(bits >> 11) * 0x1.0p-53; }
 
-/// A point of the polygon for (u, v) in the unit square: bilinear on a quad, the square-root warp on
-/// a triangle (both area-uniform for the elements' parallelogram-like quads and all triangles).
-inline glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) {
-    const auto& c = p.vertices;
-    if (p.count == 4) return (1 - v) * ((1 - u) * c[0] + u * c[1]) + v * ((1 - u) * c[3] + u * c[2]);
-    const double s = std::sqrt(u);
-    return (1 - s) * c[0] + s * (1 - v) * c[1] + s * v * c[2];
-}
-
 /// Strata per dimension in one set of rays; larger sets are cast as several sets.
 inline constexpr int kMaxStrataPerSet = 256;
 
-/// pointOn with the map's terms worked out once, for the many points of one set of rays: the bilinear
-/// map as c0 + u (c1 - c0) + v (c3 - c0) + uv (c0 - c1 + c2 - c3), the triangle's square-root warp as
-/// c0 + s (c1 - c0) + s v (c2 - c1), s = sqrt(u).
+/// A point of an element for (u, v) in the unit square: bilinear on a quad, the square-root warp on a
+/// triangle (both area-uniform for the elements' parallelogram-like quads and all triangles), with the
+/// map's terms worked out once for the many points of a set of rays: c0 + u (c1 - c0) + v (c3 - c0) +
+/// uv (c0 - c1 + c2 - c3) on a quad, c0 + s (c1 - c0) + s v (c2 - c1) with s = sqrt(u) on a triangle.
 class ElementPoints {
 public:
     explicit ElementPoints(const PatchPolygon& p) : quad_(p.count == 4), origin_(p.vertices[0]) {
@@ -664,6 +656,9 @@ private:
     bool quad_;
     glm::dvec3 origin_, du_{0.0}, dv_{0.0}, duv_{0.0};
 };
+
+/// One point of p by ElementPoints' map.
+inline glm::dvec3 pointOn(const PatchPolygon& p, double u, double v) { return ElementPoints(p).at(u, v); }
 
 /// A random permutation of 0 .. n-1 (n <= kMaxStrataPerSet) by Fisher-Yates, each index drawn from a
 /// 32-bit word of a hash of `seed` by multiply-shift, the product's low half left for the next draws
@@ -793,11 +788,12 @@ inline double pointVisibility(const glm::dvec3& x, const glm::dvec3& n, const Pa
     if (raysPerSide <= 0) return 1;
     double seen = 0, total = 0;
     const double k = raysPerSide;
+    const ElementPoints onSource(source);
     for (int i = 0; i < raysPerSide; ++i)
         for (int j = 0; j < raysPerSide; ++j) {
             const std::uint64_t h = mix(seed + static_cast<std::uint64_t>(i * raysPerSide + j));
             const double u = (i + unitInterval(h)) / k, v = (j + unitInterval(mix(h))) / k;
-            const glm::dvec3 y = pointOn(source, 1e-4 + (1 - 2e-4) * u, 1e-4 + (1 - 2e-4) * v);
+            const glm::dvec3 y = onSource.at(1e-4 + (1 - 2e-4) * u, 1e-4 + (1 - 2e-4) * v);
             const glm::dvec3 d = y - x;
             const double r2 = glm::dot(d, d);
             const double weight = std::max(0.0, glm::dot(n, d)) * std::max(0.0, -glm::dot(source.normal, d)) / (r2 * r2);
