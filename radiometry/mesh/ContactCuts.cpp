@@ -18,9 +18,11 @@ namespace radiant::detail {
 namespace {
 
 struct Line {
-    glm::dvec3 point{0.0};  ///< a point of the contact
+    glm::dvec3 point{0.0};  ///< a point of the contact (its lexicographically first end)
     glm::dvec3 across{0.0};  ///< unit, in the face's plane, perpendicular to the line
     double snap = 0;  ///< m: corners this close to the line are on it (ContactCuts.h: kContactSnap)
+    glm::dvec3 end{0.0};  ///< the contact's other end (the line cuts whole; the segment is the contact)
+    glm::dvec3 open{0.0};  ///< unit, in the plane: the side of the contact light reaches
 };
 
 /// A face's bounding box, for the grid.
@@ -215,7 +217,7 @@ std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::u
     std::vector<Line> lines;
     const Face& face = scene.surfaces[s].faces[f];
     if (!usable(face)) return lines;
-    const auto addContact = [&](const glm::dvec3& from, const glm::dvec3& to) {
+    const auto addContact = [&](const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& standing) {
         // A small thing's contact snaps at a share of its own size, not the scene's: a chair
         // leg in a hall still cuts, and lines a leg's width apart stay apart.
         const double lineSnap = std::min(tolerance.snap, kContactSnapOfEdge * glm::distance(from, to));
@@ -225,7 +227,11 @@ std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::u
         const bool ordered = lexicographicallyLess(from, to);
         const glm::dvec3& a = ordered ? from : to;
         const glm::dvec3& b = ordered ? to : from;
-        lines.push_back({a, glm::normalize(glm::cross(face.normal, glm::normalize(b - a))), lineSnap});
+        // The standing face's front looks out over the open side (a block's side over the floor
+        // before it); a face through the plane does the same with its part in front.
+        const glm::dvec3 across = glm::normalize(glm::cross(face.normal, glm::normalize(b - a)));
+        const glm::dvec3 open = glm::dot(across, standing) >= 0 ? across : -across;
+        lines.push_back({a, across, lineSnap, b, open});
     };
     glm::dvec3 flo(std::numeric_limits<double>::max()), fhi(std::numeric_limits<double>::lowest());
     for (const glm::dvec3& v : face.vertices) flo = glm::min(flo, v), fhi = glm::max(fhi, v);
@@ -243,7 +249,7 @@ std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::u
             // floor through the box's sides): its part in front stands on this face along the line
             // where it crosses the plane.
             glm::dvec3 a, b;
-            if (crossingOfPlane(other, face, a, b)) addContact(a, b);
+            if (crossingOfPlane(other, face, a, b)) addContact(a, b, other.normal);
             return;
         }
         // Otherwise it must stand on this face's front, on an edge of its own lying in the plane (a
@@ -253,7 +259,7 @@ std::vector<Line> contactLinesOfFace(const Scene& scene, std::uint32_t s, std::u
         for (std::size_t i = 0; i < v.size(); ++i) {
             const glm::dvec3 &a = v[i], &b = v[(i + 1) % v.size()];
             if (std::abs(planeDistance(face, a)) <= tolerance.plane && std::abs(planeDistance(face, b)) <= tolerance.plane)
-                addContact(a, b);
+                addContact(a, b, other.normal);
         }
     });
     return lines;
@@ -387,9 +393,13 @@ std::vector<std::vector<glm::dvec3>> conformingPieces(const Face& face, const st
 
 } // namespace
 
-ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings) {
+ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings, ContactSegments* segments) {
     ContactPolygons result(scene.surfaces.size());
     for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) result[s].resize(scene.surfaces[s].faces.size());
+    if (segments) {
+        segments->assign(scene.surfaces.size(), {});
+        for (std::uint32_t s = 0; s < scene.surfaces.size(); ++s) (*segments)[s].resize(scene.surfaces[s].faces.size());
+    }
     SceneFaces faces = collectFaces(scene);
     if (!(faces.lo.x <= faces.hi.x)) return result;
     const double extent = glm::length(faces.hi - faces.lo);
@@ -407,7 +417,8 @@ ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* w
         }
         if (!any) continue;
 
-        const SurfacePieces cut = cutByLines(surface, spreadOverPlanes(surface, lines, tolerance.plane));
+        const std::vector<std::vector<Line>> applied = spreadOverPlanes(surface, lines, tolerance.plane);
+        const SurfacePieces cut = cutByLines(surface, applied);
         if (cut.overBudget) {
             // The surface is meshed as if nothing stood on it, and the user is told.
             if (warnings)
@@ -420,6 +431,9 @@ ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* w
         }
         for (std::uint32_t g = 0; g < surface.faces.size(); ++g)
             if (usable(surface.faces[g])) result[s][g] = conformingPieces(surface.faces[g], cut.pieces[g], cut.made, tolerance.onEdge);
+        if (segments)
+            for (std::uint32_t g = 0; g < surface.faces.size(); ++g)
+                for (const Line& line : applied[g]) (*segments)[s][g].push_back({line.point, line.end, line.open, line.snap});
     }
     return result;
 }

@@ -42,9 +42,21 @@ namespace radiant::detail {
 /// the hierarchical element tree (ElementTree) alike, so both see the same footprints.
 using ContactPolygons = std::vector<std::vector<std::vector<std::vector<glm::dvec3>>>>;
 
+/// A contact lying in a face's plane: the segment where something stands on it, and the side of the
+/// segment light reaches (away from what stands there).
+struct ContactSegment {
+    glm::dvec3 from{0.0}, to{0.0};
+    glm::dvec3 open{0.0};  ///< unit, in the plane, perpendicular to the segment
+    double snap = 0;       ///< m: a corner this close to the segment's line lies on it
+};
+/// [surface][face]: the contacts that cut each face (a face takes those of its plane's other faces).
+using ContactSegments = std::vector<std::vector<std::vector<ContactSegment>>>;
+
 /// A surface whose cut would take more than kMostContactPieces pieces is left uncut, with one line
-/// in `warnings` (when given) naming it.
-ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings = nullptr);
+/// in `warnings` (when given) naming it. `segments`, when given, receives the contacts that cut
+/// (none for a surface left uncut).
+ContactPolygons cutAlongContacts(const Scene& scene, std::vector<std::string>* warnings = nullptr,
+                                 ContactSegments* segments = nullptr);
 
 /// True when a piece of a face (a convex polygon with its front normal) is covered: seen from a point
 /// `offset` m in front of its centre, no ray of a fixed set over the hemisphere (the normal and four

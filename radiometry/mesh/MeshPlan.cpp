@@ -119,8 +119,32 @@ std::size_t longestEdge(const std::vector<glm::dvec3>& corners, const Piece& pie
     return longest;
 }
 
-SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double maxArea, double tolerance,
-                        const std::vector<std::vector<std::vector<glm::dvec3>>>& contactPolygons) {
+/// True when the piece lies along a contact of its face on the side light reaches: one of its edges
+/// runs on the contact's segment for more than the snap (the floor before a block's side, not the
+/// footprint under it).
+bool besideContact(const std::vector<glm::dvec3>& corners, const Piece& piece, const std::vector<ContactSegment>& contacts) {
+    glm::dvec3 centre(0.0);
+    for (std::size_t j = 0; j < piece.count; ++j) centre += corners[piece.corners[j]] / static_cast<double>(piece.count);
+    for (const ContactSegment& contact : contacts) {
+        const double length = glm::distance(contact.from, contact.to);
+        if (!(length > 0) || glm::dot(centre - contact.from, contact.open) <= 0) continue;
+        const glm::dvec3 along = (contact.to - contact.from) / length;
+        for (std::size_t e = 0; e < piece.count; ++e) {
+            const glm::dvec3& p = corners[piece.corners[e]];
+            const glm::dvec3& q = corners[piece.corners[(e + 1) % piece.count]];
+            if (std::abs(glm::dot(p - contact.from, contact.open)) > contact.snap ||
+                std::abs(glm::dot(q - contact.from, contact.open)) > contact.snap)
+                continue;
+            const double tp = glm::dot(p - contact.from, along), tq = glm::dot(q - contact.from, along);
+            if (std::min(std::max(tp, tq), length) - std::max(std::min(tp, tq), 0.0) > contact.snap) return true;
+        }
+    }
+    return false;
+}
+
+SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, const MeshingOptions& options, double tolerance,
+                        const std::vector<std::vector<std::vector<glm::dvec3>>>& contactPolygons,
+                        const std::vector<std::vector<ContactSegment>>& contactSegments) {
     const Surface& surface = scene.surfaces[surfaceIndex];
     SurfacePlan plan;
     VertexWelder welder(tolerance);
@@ -177,10 +201,12 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
     // Collinear corners can leave a piece without area; it would only carry a NaN normal.
     std::erase_if(plan.pieces, [&](const Piece& piece) { return !(glm::length(newellNormal(plan.corners, piece)) > 0); });
 
-    // Each piece asks for the fewest segments that keep its patches under maxArea and near square.
+    // Each piece asks for the fewest segments that keep its patches under its bound and near square.
     for (Piece& piece : plan.pieces) {
         for (std::size_t e = 0; e < piece.count; ++e)
             piece.edges[e] = edgeBetween(piece.corners[e], piece.corners[(e + 1) % piece.count]);
+        piece.besideContact = piece.contactCut && besideContact(plan.corners, piece, contactSegments[piece.face]);
+        const double maxArea = options.maxPatchArea * (piece.besideContact ? options.besideContactAreaShare : 1.0);
         const double area = 0.5 * glm::length(newellNormal(plan.corners, piece));
         if (piece.count == 3) {
             if (area <= 2 * maxArea * (1 + kAreaSlack)) {
@@ -215,7 +241,9 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
     }
 
     // A quad that is not a parallelogram has cells of unequal size: refine until its largest cell
-    // fits. Counts only grow, and growing one class never breaks another piece's bound.
+    // fits the bound every patch keeps (a piece beside a contact asked for finer cells above, and
+    // keeps them where it is a parallelogram). Counts only grow, and growing one class never breaks
+    // another piece's bound.
     for (bool changed = true; changed;) {
         changed = false;
         for (const Piece& piece : plan.pieces) {
@@ -225,10 +253,10 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, double max
             const glm::dvec3 normal = glm::normalize(newellNormal(plan.corners, piece));
             const std::uint64_t nu = classes.segments(piece.edges[0]), nv = classes.segments(piece.edges[1]);
             const double largest = largestQuadCell(p, normal, nu, nv);
-            if (largest <= maxArea * (1 + kAreaSlack)) continue;
+            if (largest <= options.maxPatchArea * (1 + kAreaSlack)) continue;
             if (nu >= kMaxSegments && nv >= kMaxSegments) continue;  // beyond any budget anyway
             // Both directions grow by at least one segment, so the loop always progresses.
-            const double grow = std::sqrt(largest / maxArea);
+            const double grow = std::sqrt(largest / options.maxPatchArea);
             const auto grown = [&](std::uint64_t segments) {
                 return std::max(segments + 1, segmentsFor(static_cast<double>(segments) * grow, 1.0));
             };
@@ -282,11 +310,16 @@ MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
         throw RadiantError({scene.name, "max patch area"},
                            "must be a positive number of m^2, not " + numberText(options.maxPatchArea));
     }
+    if (!(options.besideContactAreaShare > 0 && options.besideContactAreaShare <= 1)) {
+        throw RadiantError({scene.name, "patch area beside contacts"},
+                           "must be a share of the max patch area in (0, 1], not " + numberText(options.besideContactAreaShare));
+    }
     MeshPlan plan;
     const double tolerance = weldTolerance(scene);
-    const ContactPolygons contacts = cutAlongContacts(scene);
+    ContactSegments segments;
+    const ContactPolygons contacts = cutAlongContacts(scene, nullptr, &segments);
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        plan.surfaces.push_back(planSurface(scene, s, options.maxPatchArea, tolerance, contacts[s]));
+        plan.surfaces.push_back(planSurface(scene, s, options, tolerance, contacts[s], segments[s]));
         for (const Piece& piece : plan.surfaces.back().pieces) plan.patchCount += plan.surfaces.back().patchCount(piece);
     }
     return plan;

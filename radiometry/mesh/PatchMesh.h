@@ -79,6 +79,11 @@ struct MeshingOptions {
     double maxPatchArea = 0.01;          ///< m^2; every patch is at most this large (and not much smaller),
                                          ///< up to a relative 4e-6 that absorbs float-rounded dimensions
     std::size_t patchBudget = 2'000'000; ///< refuse (BudgetError, with the numbers) above this
+    /// A piece of a face cut along a contact (ContactCuts.h) that lies along it on the open side (the
+    /// floor before a block's side) asks for patches of this share of maxPatchArea: there the lamp's
+    /// penumbra and the contact's corner make the radiosity vary fastest. Conformity carries the finer
+    /// counts along the piece's rows and columns (MeshPlan.h). 1: no refinement.
+    double besideContactAreaShare = 0.5;
 };
 
 struct PatchMesh {

@@ -7,7 +7,7 @@
 #include "radiometry/common/PatchAreaText.h"
 #include "radiometry/common/Thousands.h"
 #include "radiometry/mesh/PatchMesh.h"
-#include "radiometry/scene/BuiltinScenes.h"
+#include "radiometry/solver/DefaultMethod.h"
 #include "radiometry/solver/SolveDefaults.h"
 
 namespace radiant {
@@ -30,11 +30,11 @@ std::size_t patchesAt(const Scene& scene, double area) {
 
 OpeningArea openingPatchArea(const Scene& scene) {
     const double base = kSolveDefaults.maxPatchArea;
-    static const std::size_t cornell = patchesAt(makeCornellBox(), base);
+    const std::size_t budget = kProgressiveMaxPatches;
     const std::size_t atBase = patchesAt(scene, base);
-    if (atBase <= cornell)
-        return {base, inSquareCentimetres(base) + ", the default: " + withThousands(atBase) + " patches (a scene of more than the Cornell box's " +
-                          withThousands(cornell) + " opens coarser)"};
+    if (atBase <= budget)
+        return {base, inSquareCentimetres(base) + ", the default: " + withThousands(atBase) + " patches (a scene of more than " +
+                          withThousands(budget) + " opens coarser)"};
     // Steps in cm^2 from the default's decade: 1, 2, 2.5, 5, 10, 20, 25, 50, ...
     const double decade = std::pow(10.0, std::floor(std::log10(base * kCm2PerM2) + 1e-9));
     double chosen = kMaxOpeningPatchArea;
@@ -45,7 +45,7 @@ OpeningArea openingPatchArea(const Scene& scene) {
             const double area = step * scale / kCm2PerM2;
             if (area <= base || area >= kMaxOpeningPatchArea) continue;
             patches = patchesAt(scene, area);
-            if (patches <= cornell) {
+            if (patches <= budget) {
                 chosen = area;
                 found = true;
                 break;
@@ -55,7 +55,7 @@ OpeningArea openingPatchArea(const Scene& scene) {
     }
     if (chosen == kMaxOpeningPatchArea) patches = patchesAt(scene, chosen);
     return {chosen, inSquareCentimetres(chosen) + " for the scene's " + sceneAreaText(scene.totalArea()) + ": " + withThousands(patches) +
-                        " patches, about the Cornell box's " + withThousands(cornell) + " (" + inSquareCentimetres(base) + " would make " +
+                        " patches, within the " + withThousands(budget) + " progressive refinement solves by default (" + inSquareCentimetres(base) + " would make " +
                         withThousands(atBase) + ")"};
 }
 

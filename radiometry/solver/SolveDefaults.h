@@ -12,12 +12,14 @@ struct SolveDefaults {
     /// Within 0.33% mean / 1.6% worst of the path tracer at the Cornell box's 18 points in 0.79 s,
     /// where Gauss-Seidel is 0.24% / 0.94% after 5.8 s of form factors (README, the accuracy table).
     SolverMethod method = SolverMethod::Progressive;
-    /// m^2: 2,805 patches in the Cornell box (its floor cut along the blocks' footprints), where
-    /// converged Gauss-Seidel is within 0.24% mean and 0.94% worst of the path tracer at the accuracy
-    /// bench's 18 points; at 0.01 m^2 (260 patches, before the cut) 5.9% / 20% at 10 points. The
-    /// tables are in docs/ARCHITECTURE.md, "Defaults". MeshingOptions' own 0.01 is the library's, for
-    /// code that meshes without asking.
-    double maxPatchArea = 0.001;
+    /// m^2: 2,248 patches in the Cornell box (its floor cut along the blocks' footprints and meshed at
+    /// half this area along their feet, MeshingOptions::besideContactAreaShare), where converged
+    /// Gauss-Seidel is within 0.18% mean and 0.52% worst of the path tracer at the accuracy bench's 18
+    /// points, and 0.96% worst on the box with its blocks square to the walls (2.5% at the earlier
+    /// uniform 0.001 m^2, 2,805 patches); at 0.01 m^2 (260 patches, before the cut) 5.9% / 20% at 10
+    /// points. The tables are in docs/ARCHITECTURE.md, "Defaults". MeshingOptions' own 0.01 is the
+    /// library's, for code that meshes without asking.
+    double maxPatchArea = 0.0013;
     /// Stop when the method's residual (Solver.h) falls below this.
     double tolerance = 1e-4;
     std::size_t maxIterations = 100000;  ///< a solve that has not converged by then stops and says so

@@ -73,8 +73,8 @@ TEST_CASE("the built-in scenes of large quads are never grouped by default: the 
             CHECK(choice.method.reason == plain.reason);
         }
     }
-    // The Cornell box keeps its patch count: the accuracy table's and the lab's 2,805.
-    CHECK(meshGrouped(makeCornellBox(), kSolveDefaults.maxPatchArea).size() == 2805);
+    // The Cornell box keeps its patch count: the accuracy table's and the lab's 2,248.
+    CHECK(meshGrouped(makeCornellBox(), kSolveDefaults.maxPatchArea).size() == 2248);
     // Its stderr is what it was (the method's line only); the JSON says why nothing was grouped.
     const test::CommandRun run = test::runRadiant("solve cornell-box --max-patch-area 0.05 --max-iterations 1 --json -");
     INFO(run.err);
@@ -206,20 +206,20 @@ TEST_CASE("--group-patches and --no-group-patches exclude each other") {
     CHECK(contains(run.err, "excludes"));
 }
 
-TEST_CASE("the lab opens a room at about the Cornell box's patch count, and the Cornell box as before") {
+TEST_CASE("the lab opens a room within progressive refinement's patch count, and the Cornell box at the default") {
     const OpeningArea cornell = openingPatchArea(makeCornellBox());
     CHECK(cornell.maxPatchArea == kSolveDefaults.maxPatchArea);
-    CHECK(contains(cornell.reason, "the default: 2,805 patches"));
+    CHECK(contains(cornell.reason, "the default: 2,248 patches"));
     // The shipped Cornell box file (float positions) too.
     CHECK(openingPatchArea(loadScene("cornell-box").scene).maxPatchArea == kSolveDefaults.maxPatchArea);
 
     const Scene room = loadScene(groupingFile("sphere_room.gltf")).scene;
     const OpeningArea opening = openingPatchArea(room);
     INFO(opening.reason);
-    // 61,935 patches at 10 cm^2, 3,441 at 200 cm^2, 2,694 at 250 cm^2: the first step within 2,805.
+    // 46,849 patches at 13 cm^2, 3,441 at 200 cm^2, 2,694 at 250 cm^2: the first step within 3,000.
     CHECK(opening.maxPatchArea == relativeTo(0.025, 1e-12));
     CHECK(contains(opening.reason, "250 cm^2 for the scene's "));
-    CHECK(contains(opening.reason, "2,694 patches, about the Cornell box's 2,805 (10 cm^2 would make 61,935)"));
+    CHECK(contains(opening.reason, "2,694 patches, within the 3,000 progressive refinement solves by default (13 cm^2 would make 46,849)"));
     const PatchMesh mesh = meshGrouped(room, opening.maxPatchArea);
     CHECK(mesh.size() == 2694);
     const SystemChoice choice = chooseSystem(mesh, opening.maxPatchArea, GroupingMode::Auto, std::nullopt);
