@@ -9,8 +9,8 @@ namespace radiant {
 
 struct SolveDefaults {
     /// While the mesh is small (DefaultMethod.h: chooseDefaultMethod picks hierarchical beyond).
-    /// Within 0.33% mean / 1.6% worst of the path tracer at the Cornell box's 18 points in 0.79 s,
-    /// where Gauss-Seidel is 0.24% / 0.94% after 5.8 s of form factors (README, the accuracy table).
+    /// Within 0.23% mean / 0.70% worst of the path tracer at the Cornell box's 18 points in 0.50 s,
+    /// where Gauss-Seidel is 0.18% / 0.52% after 2.0 s of form factors (README, the accuracy table).
     SolverMethod method = SolverMethod::Progressive;
     /// m^2: 2,248 patches in the Cornell box (its floor cut along the blocks' footprints and meshed at
     /// half this area along their feet, MeshingOptions::besideContactAreaShare), where converged
