@@ -205,8 +205,9 @@ SurfacePlan planSurface(const Scene& scene, std::size_t surfaceIndex, const Mesh
     for (Piece& piece : plan.pieces) {
         for (std::size_t e = 0; e < piece.count; ++e)
             piece.edges[e] = edgeBetween(piece.corners[e], piece.corners[(e + 1) % piece.count]);
-        piece.besideContact = piece.contactCut && besideContact(plan.corners, piece, contactSegments[piece.face]);
-        const double maxArea = options.maxPatchArea * (piece.besideContact ? options.besideContactAreaShare : 1.0);
+        const bool finer = options.besideContactAreaShare < 1 && piece.contactCut &&
+                           besideContact(plan.corners, piece, contactSegments[piece.face]);
+        const double maxArea = options.maxPatchArea * (finer ? options.besideContactAreaShare : 1.0);
         const double area = 0.5 * glm::length(newellNormal(plan.corners, piece));
         if (piece.count == 3) {
             if (area <= 2 * maxArea * (1 + kAreaSlack)) {

@@ -40,8 +40,6 @@ struct Piece {
     /// Cut from a face along contacts (ContactCuts.h): only such a piece can lie under what stands on
     /// its face, so only these are asked whether they are covered.
     bool contactCut = false;
-    /// Lies along a contact on the side light reaches (MeshingOptions::besideContactAreaShare).
-    bool besideContact = false;
     bool covered = false;  ///< set by meshScene() (coveredPiece), not by planning
 };
 

@@ -273,7 +273,9 @@ TEST_CASE("hierarchical radiosity in the closed furnace with a box on the floor:
     // solver skips the covered patches' rows on Patch::covered rather than cast their rays.
     // Uniform patches: with the finer ones the mesher lays along the box's foot (besideContactAreaShare
     // 0.5) the worst open patch, a floor patch at the foot, reads 2.0-2.6% over seeds 1-6 (1.6-2.3%
-    // uniform): the patches' gather near a contact, open in issue 14 (docs/ARCHITECTURE.md, "Accuracy").
+    // uniform): the patch rows read the visible share of a link whose receiver is up to kLargeReceiver
+    // times the patch, which at the foot is not the small patch's own. Open in issue 14
+    // (docs/ARCHITECTURE.md, "Accuracy", item 23).
     const Scene scene = furnaceWithBox(0);
     MeshingOptions meshing{0.01};
     meshing.besideContactAreaShare = 1;
