@@ -274,11 +274,19 @@ void HierarchicalSolver::buildSourceRules() {
 }
 
 void HierarchicalSolver::buildPatchRows() {
+    patchIrradianceCurrent_ = false;
     linkShaft_.assign(occluderBegin_.empty() ? 0 : links_.size(), 0);
     buildSourceRules();
-    std::vector<std::vector<GatherTerm>> rows(patches_.size());
+    // Chunks of 16 patches (about 70 per thread: a patch in the lamp's penumbra costs many times a
+    // dark one, and with 64 one thread finished its last chunk alone), each chunk's rows appended to
+    // one buffer of its own (a vector per patch grew by doubling: ~2,000 vectors' reallocations).
+    constexpr std::size_t kRowChunk = 16;
+    std::vector<std::vector<GatherTerm>> chunkRows((patches_.size() + kRowChunk - 1) / kRowChunk);
+    std::vector<std::size_t> rowSize(patches_.size(), 0);
     const auto& radiosity = tree_.radiosity();
-    parallelChunks(patches_.size(), threads(), 64, [&](std::size_t from, std::size_t to, unsigned) {
+    parallelChunks(patches_.size(), threads(), kRowChunk, [&](std::size_t from, std::size_t to, unsigned) {
+        std::vector<GatherTerm>& chunkRow = chunkRows[from / kRowChunk];
+        std::vector<GatherTerm> row;  // the current patch's terms, merged, then appended to chunkRow
         // A link's visible share, the same for every point of its receiver, except where its rays
         // found it partially visible or its receiver is much larger than the patch: there visibility
         // and radiosity vary together (the floor under a sphere is in its shadow; a link from a larger
@@ -342,7 +350,7 @@ void HierarchicalSolver::buildPatchRows() {
         };
         for (std::size_t p = from; p < to; ++p) {
             const PatchSample& patch = patches_[p];
-            std::vector<GatherTerm>& row = rows[p];
+            row.clear();
             for (const ElementIndex term : cast) termVisibility[term] = -1.0;
             cast.clear();
             // A covered patch (the floor under a block) sees only backs: no light reaches it, and its
@@ -471,22 +479,30 @@ void HierarchicalSolver::buildPatchRows() {
             }
             row.resize(kept);
             for (const GatherTerm& term : row) rowSlot[term.source] = -1;
+            chunkRow.insert(chunkRow.end(), row.begin(), row.end());
+            rowSize[p] = kept;
         }
     });
     patchRowBegin_.assign(patches_.size() + 1, 0);
-    for (std::size_t p = 0; p < rows.size(); ++p) patchRowBegin_[p + 1] = patchRowBegin_[p] + rows[p].size();
+    for (std::size_t p = 0; p < patches_.size(); ++p) patchRowBegin_[p + 1] = patchRowBegin_[p] + rowSize[p];
     patchRows_.clear();
     patchRows_.reserve(patchRowBegin_.back());
-    for (const auto& row : rows) patchRows_.insert(patchRows_.end(), row.begin(), row.end());
+    for (const auto& chunkRow : chunkRows) patchRows_.insert(patchRows_.end(), chunkRow.begin(), chunkRow.end());
     patchRowsCurrent_ = true;
     sourceRules_ = {};
 }
 
-Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
+Rgb HierarchicalSolver::patchRowIrradiance(std::size_t patch) const {
     const auto& radiosity = tree_.radiosity();
     Rgb irradiance(0.0);
     for (std::size_t k = patchRowBegin_[patch]; k < patchRowBegin_[patch + 1]; ++k)
         irradiance += static_cast<double>(patchRows_[k].weight) * radiosity[patchRows_[k].source];
+    return irradiance;
+}
+
+Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) {
+    Rgb irradiance = patchRowIrradiance(patch);
+    patchIrradiance_[patch] = irradiance;
     const std::uint32_t s = patches_[patch].surface;
     if (!patchDirect_.empty()) irradiance += patchDirect_[patch];
     return surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;
@@ -566,7 +582,9 @@ void HierarchicalSolver::buildLeafRows() {
         ElementIndex source;
         double kernel, visible;
     };
-    parallelChunks(n, threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
+    // Chunks of 16 elements: the leaves with rows of their own are a few dozen to a few hundred,
+    // bunched together in the tree's order (chunks of 256 left one thread to build most of them).
+    parallelChunks(n, threads(), 16, [&](std::size_t from, std::size_t to, unsigned) {
         std::vector<Term> terms;
         for (std::size_t i = from; i < to; ++i) {
             const auto leaf = static_cast<ElementIndex>(i);
@@ -644,14 +662,10 @@ void HierarchicalSolver::gatherLeafRows() {
     const auto& radiosity = tree_.radiosity();
     const std::size_t n = tree_.size();
     patchIrradiance_.resize(patches_.size());
-    parallelChunks(patches_.size(), threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
-        for (std::size_t p = from; p < to; ++p) {
-            Rgb sum(0.0);
-            for (std::size_t k = patchRowBegin_[p]; k < patchRowBegin_[p + 1]; ++k)
-                sum += static_cast<double>(patchRows_[k].weight) * radiosity[patchRows_[k].source];
-            patchIrradiance_[p] = sum;
-        }
-    });
+    if (!patchIrradianceCurrent_)
+        parallelChunks(patches_.size(), threads(), 256, [&](std::size_t from, std::size_t to, unsigned) {
+            for (std::size_t p = from; p < to; ++p) patchIrradiance_[p] = patchRowIrradiance(p);
+        });
     // A patch's row is its mean over the patch, and the leaves it straddles differ (one in a shadow,
     // one out): each leaf takes its own pushed irradiance (the links' value over it, from the last
     // push-pull) plus the patches' rows less the pushed irradiance averaged over the same patch, so

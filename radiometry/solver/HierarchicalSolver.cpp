@@ -348,6 +348,7 @@ double HierarchicalSolver::pushPull() {
     const std::size_t n = tree_.size();
     auto& radiosity = tree_.radiosity();
     pushedIrradiance_.resize(n);
+    patchIrradianceCurrent_ = false;
     lightNewElements();
     Rgb change(0.0), emitted(0.0);
     // Push: parents precede children, so one forward sweep hands every leaf its ancestors' irradiance,
@@ -383,6 +384,7 @@ double HierarchicalSolver::pushPull() {
 }
 
 void HierarchicalSolver::setLeavesToEmission() {
+    patchIrradianceCurrent_ = false;
     lightNewElements();
     auto& radiosity = tree_.radiosity();
     for (ElementIndex e = 0; e < tree_.size(); ++e) radiosity[e] = elementSource(e);
@@ -407,11 +409,18 @@ void HierarchicalSolver::mapSolution(bool gathered) {
     const auto& radiosity = tree_.radiosity();
     if (gathered && !patchRowsCurrent_) buildPatchRows();
     gathered = gathered && patchRowsCurrent_;
+    if (gathered) patchIrradiance_.resize(patches_.size());
     parallelChunks(patches_.size(), threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
-        for (std::size_t i = from; i < to; ++i)
-            solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
-                                                                       : radiosity[patchElement_[i]] + patchDirectCorrection(i);
+        for (std::size_t i = from; i < to; ++i) {
+            if (gathered && patches_[i].polygon.count >= 3) {
+                solution_[i] = gatheredRadiosity(i);
+                continue;
+            }
+            if (gathered) patchIrradiance_[i] = patchRowIrradiance(i);
+            solution_[i] = radiosity[patchElement_[i]] + patchDirectCorrection(i);
+        }
     });
+    patchIrradianceCurrent_ = gathered;
     afterSolutionMapped();
 }
 

@@ -220,7 +220,11 @@ private:
     /// False without occluders to test.
     [[nodiscard]] bool shaftClear(std::uint32_t link) const;
 
-    [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
+    /// The irradiance a patch's row gathers from the tree's radiosity.
+    [[nodiscard]] Rgb patchRowIrradiance(std::size_t patch) const;
+    /// E + rho (its row's irradiance + the lights' direct part) for a patch whose row is built; stores
+    /// the row's irradiance in patchIrradiance_ for the next step's gatherLeafRows.
+    [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch);
     void setLeavesToEmission();
     /// H for the elements created since the last call (and each patch's on the first), in parallel.
     void lightNewElements();
@@ -288,6 +292,10 @@ private:
     std::vector<LeafPoint> leafPoints_;
     std::vector<std::uint8_t> leafFromPatches_;  ///< per element: 1 for a leaf that reads the patch rows
     std::vector<Rgb> patchIrradiance_, patchPushed_;  ///< per patch, scratch of gatherLeafRows
+    /// patchIrradiance_ holds every patch row's sum at the radiosity the tree holds now: the solution's
+    /// map computed it (after push-pull), and the next step's gatherLeafRows reads the same radiosity.
+    /// Cleared wherever the radiosity or the rows change.
+    bool patchIrradianceCurrent_ = false;
     std::vector<Rgb> leafIrradiance_;
     bool leafRowsCurrent_ = false;
     bool linksSettled_ = false;  ///< the rows were built: no refinement until materials or the view change
