@@ -33,7 +33,8 @@ void HierarchicalSolver::indexLinksByReceiver() {
 
 namespace {
 
-/// F(dx -> q): Lambert's contour integral, or where q is small for its distance from x, a Gauss rule of
+/// F(dx -> q): Lambert's contour integral (in float where q lies wholly above x's tangent plane:
+/// pointToElementFormFactorFloat), or where q is small for its distance from x, a Gauss rule of
 /// the point kernel over it by q's precomputed nodes: 2 x 2 beyond kFarFieldDistanceSquaredOverArea
 /// (within 0.2% there, a quarter of the cost: the patch rows of a 2,000-patch mesh took 0.25 s of CPU
 /// with the contour integral alone), 3 x 3 beyond kGaussDistanceSquaredOverArea, 5 x 5 beyond
@@ -49,7 +50,7 @@ double kernelAt(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& q,
         const double f = hierarchical::ruleFormFactor(x, n, q, rule, order);
         if (f >= 0) return f;
     }
-    return hierarchical::pointToElementFormFactor(x, n, q);
+    return hierarchical::pointToElementFormFactorFloat(x, n, q);
 }
 
 /// F(p -> q) unoccluded, for a receiver small against the link it inherits: the receiver's mean of

@@ -361,6 +361,49 @@ TEST_CASE("hierarchical gather kernel: a source touching the point's tangent pla
     CHECK(farCompared >= 30);
 }
 
+TEST_CASE("hierarchical exact kernel in float: within 5e-6 of the double contour integral near the source, clipped polygons in double") {
+    // The rows and refinement take Lambert's integral in float near a source (their weights are
+    // floats), nearer than the 5 x 5 rule's distance (kNearGaussDistanceSquaredOverArea = 1): against
+    // the double routine at points from a hundredth of sqrt(A) beyond the source's extent to four
+    // times the rule's distance, tilted receivers, a quad and a triangle, and the same far from the
+    // origin (offsets are taken in double before the float arithmetic). Farther, the edges' terms
+    // cancel more (their sum is small against each) and float keeps 1e-4 at 1,000 A: the rules
+    // stand in there anyway.
+    int inFloat = 0, clipped = 0;
+    for (const glm::dvec3 shift : {glm::dvec3(0.0), glm::dvec3(120.0, -80.0, 45.0)})
+        forEachObliqueReceiver(
+            {0.0001, 0.01, 0.1, 0.5, 1.0, 4.0, 32.0, 1000.0},
+            [](const PatchPolygon& source, double nearest2OverA) { return std::sqrt(nearest2OverA * source.area) + std::sqrt(source.area); },
+            [&](const PatchPolygon& unshifted, const glm::dvec3& point, const glm::dvec3& normal, double) {
+                std::vector<glm::dvec3> corners;
+                for (const glm::dvec3& corner : unshifted.corners()) corners.push_back(corner + shift);
+                const PatchPolygon source = makeElementPolygon(corners);
+                const glm::dvec3 x = point + shift;
+                const double exact = hierarchical::pointToElementFormFactor(x, normal, source);
+                const double single = hierarchical::pointToElementFormFactorFloat(x, normal, source);
+                bool below = false;
+                for (const glm::dvec3& corner : source.corners()) below = below || glm::dot(normal, corner - x) < 0;
+                if (below) {
+                    ++clipped;
+                    CHECK(single == exact);  // clipped in double
+                    return;
+                }
+                ++inFloat;
+                REQUIRE(exact > 0);
+                const double nearest2OverA = std::pow(glm::length(x - source.centroid) / std::sqrt(source.area) - 1, 2);
+                CHECK(single == doctest::Approx(exact).scale(0).epsilon(nearest2OverA <= 4.01 ? 5e-6 : 1e-4));
+            });
+    CHECK(inFloat > 200);
+    CHECK(clipped > 20);
+    // Behind the source's emitting side: nothing, as the double routine.
+    const PatchPolygon square = makeElementPolygon(std::vector<glm::dvec3>{{0, 0, 0}, {0.1, 0, 0}, {0.1, 0.1, 0}, {0, 0.1, 0}});
+    CHECK(hierarchical::pointToElementFormFactorFloat({0.05, 0.05, -0.2}, {0, 0, 1}, square) == 0);
+    // Straight above the square's centre, facing it: the catalog's parallel coaxial square.
+    const double h = 0.1, a = 0.05 / h;
+    const double catalog = 2 / std::numbers::pi * (a / std::sqrt(1 + a * a) * std::atan(a / std::sqrt(1 + a * a))) * 2;
+    CHECK(hierarchical::pointToElementFormFactorFloat({0.05, 0.05, h}, {0, 0, -1}, square) == doctest::Approx(catalog).scale(0).epsilon(5e-6));
+}
+
 TEST_CASE("hierarchical exact kernel: its angle agrees with std::atan2 to 1e-15 over every quadrant used") {
     // angleOf replaces libm's atan2 in Lambert's contour integral: y >= 0, x of either sign, over 12
     // decades of the ratio, both on the branch boundaries (x = y, x = -y, x = 0) and between them.
