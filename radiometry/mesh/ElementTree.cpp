@@ -167,6 +167,11 @@ ElementIndex ElementTree::locate(std::uint32_t surfaceIndex, std::uint32_t face,
         }
     }
     if (found == kNoElement) return kNoElement;
+    return descend(found, point, minArea);
+}
+
+ElementIndex ElementTree::descend(ElementIndex from, const glm::dvec3& point, double minArea) const {
+    ElementIndex found = from;
     while (!isLeaf(found) && polygons_[found].area * 0.25 >= minArea * (1 - 1e-9)) {
         const ElementIndex first = nodes_[found].firstChild;
         // Points on a shared edge are in two children; round-off may put one in none: then the

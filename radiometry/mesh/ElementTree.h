@@ -56,6 +56,11 @@ public:
     /// goes to the nearest root of that face; kNoElement only for a face that does not exist.
     [[nodiscard]] ElementIndex locate(std::uint32_t surfaceIndex, std::uint32_t face, const glm::dvec3& point,
                                       double minArea = 0) const;
+    /// locate's descent from `from` (an element holding `point`, as locate found it): the element
+    /// locate returns now, after the tree has grown below `from`. Splitting leaves never changes the
+    /// path to an existing element, so a map of points to elements kept up to date this way equals
+    /// locate's from the roots.
+    [[nodiscard]] ElementIndex descend(ElementIndex from, const glm::dvec3& point, double minArea = 0) const;
 
     /// True when `point` (on or near the element's plane) lies inside the element; points on an edge
     /// count as inside both neighbours.

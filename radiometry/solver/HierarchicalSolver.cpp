@@ -394,13 +394,18 @@ void HierarchicalSolver::setLeavesToEmission() {
 void HierarchicalSolver::mapSolution(bool gathered) {
     // Both loops per patch on both cores: on one they were ~14 ms of the Cornell box's solve (a
     // locate per patch after each of ~12 refining steps, a row per patch after each later step).
+    // After a refining step each patch descends from the element it had (the tree only grows below
+    // it), instead of a locate from the roots.
     if (mappedTreeSize_ != tree_.size() || patchElement_.size() != patches_.size()) {
+        const bool mapped = patchElement_.size() == patches_.size();
         patchElement_.resize(patches_.size());
         parallelChunks(patches_.size(), threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
             for (std::size_t i = from; i < to; ++i) {
                 const PatchSample& patch = patches_[i];
                 // The element about the patch's size holds the area-weighted mean of the leaves under it.
-                patchElement_[i] = tree_.locate(patch.surface, patch.face, patch.centroid, 0.5 * patch.area);
+                patchElement_[i] = mapped && patchElement_[i] != kNoElement
+                                       ? tree_.descend(patchElement_[i], patch.centroid, 0.5 * patch.area)
+                                       : tree_.locate(patch.surface, patch.face, patch.centroid, 0.5 * patch.area);
             }
         });
         mappedTreeSize_ = tree_.size();

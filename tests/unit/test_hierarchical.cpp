@@ -192,6 +192,17 @@ TEST_CASE("element tree: roots per face, quad and triangle children tile their p
     CHECK(tree.contains(leaf, point));
     CHECK(tree.surface(leaf) == floor);
     CHECK(tree.locate(floor, 0, point, tree.area(leaf) * 2) == tree.parent(leaf));
+
+    // descend() from an element found before the tree grew below it reaches what locate() finds now.
+    const ElementIndex before = tree.locate(floor, 0, point, 0.001);
+    const ElementIndex first = tree.subdivide(leaf);
+    for (ElementIndex c = first; c < first + 4; ++c) tree.subdivide(c);
+    CHECK_FALSE(tree.isLeaf(before));
+    for (const double minArea : {0.0, 0.001, tree.area(leaf) / 20}) {
+        CAPTURE(minArea);
+        CHECK(tree.descend(before, point, minArea) == tree.locate(floor, 0, point, minArea));
+    }
+    CHECK(tree.locate(floor, 0, point) != before);
 }
 
 TEST_CASE("element tree: memory grows linearly with the elements") {
