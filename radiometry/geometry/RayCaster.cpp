@@ -64,6 +64,8 @@ struct RayCaster::Impl : TriangleTable {
     /// may block (or the test was too costly): the packets then trace `scene`.
     RTCScene occluderScene = nullptr;
     TriangleTable occluders;
+    /// Per face (surfaces in order, faces in order): occludersBetweenFaces, empty when every face may block.
+    std::vector<bool> faceMayBlock;
 
     Impl() = default;
     Impl(const Impl&) = delete;
@@ -270,6 +272,7 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
     // (hierarchical radiosity's visibility sets), traverse the other faces alone.
     const std::vector<bool> blocks = occludersBetweenFaces(scene, impl.planeTolerance);
     if (!blocks.empty() && std::find(blocks.begin(), blocks.end(), false) != blocks.end()) {
+        impl.faceMayBlock = blocks;
         impl.occluders = TriangleTable{{}, impl.origin, impl.extent, impl.planeTolerance};
         std::vector<std::size_t> firstFace;  // flat index of each surface's first face
         std::size_t flat = 0;
@@ -281,6 +284,10 @@ RayCaster::RayCaster(const Scene& scene) : impl_(std::make_unique<Impl>()) {
                                         [&](std::uint32_t s, std::uint32_t f) { return blocks[firstFace[s] + f]; });
         throwOnDeviceError(impl.device, scene.name.empty() ? "building the occluders' BVH" : scene.name);
     }
+}
+
+bool RayCaster::mayBlock(std::size_t face) const {
+    return face >= impl_->faceMayBlock.size() || impl_->faceMayBlock[face];
 }
 
 RayCaster::~RayCaster() = default;

@@ -51,6 +51,12 @@ public:
     /// blocked. The spans have one size.
     void occluded(std::span<const glm::dvec3> a, std::span<const glm::dvec3> b, std::span<bool> blocked) const;
 
+    /// Whether face `face` (counted over the surfaces in order, then their faces) can block a segment
+    /// between two points of the scene's faces: false for a face on the scene's hull facing in (a
+    /// room's walls, floor and ceiling), which such a segment meets only at an end. The segments'
+    /// span overload leaves those faces out; so may other tests of the same segments.
+    [[nodiscard]] bool mayBlock(std::size_t face) const;
+
     /// Ray casters constructed in this process so far: a BVH build is the cost the lab shares, and
     /// tests count them. Atomic; it only counts, nothing depends on it.
     [[nodiscard]] static std::uint64_t constructed();

@@ -330,6 +330,18 @@ TEST_CASE("ray caster: packets leave out only the faces bounding the scene") {
     }
     CHECK(blocked > 400);
     CHECK(disagreements <= 2);
+    // The faces it leaves out, as mayBlock reports them (the hierarchical solver's shafts skip them).
+    CHECK_FALSE(rays.mayBlock(0));
+    CHECK(rays.mayBlock(1));
+    const Scene box = makeCornellBox();
+    const RayCaster boxRays(box);
+    std::size_t face = 0;
+    for (const Surface& surface : box.surfaces)
+        for (std::size_t f = 0; f < surface.faces.size(); ++f) {
+            CAPTURE(surface.name);
+            CHECK(boxRays.mayBlock(face++) == (surface.name.find("block") != std::string::npos));
+        }
+    CHECK(boxRays.mayBlock(face));  // past the last face: nothing known, so it may
 }
 
 TEST_CASE("visibility: concurrent queries on one ray caster agree with sequential ones") {
