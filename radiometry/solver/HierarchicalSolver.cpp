@@ -62,9 +62,16 @@ HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh
                     low = glm::min(low, v);
                     high = glm::max(high, v);
                 }
-                if (!caster_->mayBlock(index++)) continue;
+                if (!caster_->mayBlock(index++) || face.vertices.empty()) continue;
                 occluderCorners_.insert(occluderCorners_.end(), face.vertices.begin(), face.vertices.end());
                 occluderBegin_.push_back(static_cast<std::uint32_t>(occluderCorners_.size()));
+                glm::dvec3 faceLow = face.vertices.front(), faceHigh = face.vertices.front();
+                for (const glm::dvec3& v : face.vertices) {
+                    faceLow = glm::min(faceLow, v);
+                    faceHigh = glm::max(faceHigh, v);
+                }
+                occluderBox_.push_back(faceLow);
+                occluderBox_.push_back(faceHigh);
             }
         shaftTolerance_ = 1e-7 * glm::length(high - low);
     }
@@ -510,7 +517,7 @@ std::size_t HierarchicalSolver::bytes() const {
            (receiverLinkBegin_.capacity() + receiverLinks_.capacity()) * sizeof(std::uint32_t) +
            patchRowBegin_.capacity() * sizeof(std::size_t) +
            patchRows_.capacity() * sizeof(GatherTerm) + occluderCorners_.capacity() * sizeof(glm::dvec3) +
-           occluderBegin_.capacity() * sizeof(std::uint32_t) + linkShaft_.capacity() +
+           occluderBegin_.capacity() * sizeof(std::uint32_t) + occluderBox_.capacity() * sizeof(glm::dvec3) + linkShaft_.capacity() +
            leafPoints_.capacity() * sizeof(LeafPoint) + leafFromPatches_.capacity() +
            (patchIrradiance_.capacity() + patchPushed_.capacity()) * sizeof(Rgb) +
            sourceRules_.capacity() * sizeof(hierarchical::SourceRule);

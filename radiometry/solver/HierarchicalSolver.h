@@ -264,11 +264,13 @@ private:
     std::size_t mappedTreeSize_ = 0;
     std::vector<Rgb> solution_;
     std::vector<std::uint32_t> receiverLinkBegin_, receiverLinks_;
-    /// The scene's faces, the occluders shaftClear tests (the ray caster's geometry): corners of face k
-    /// are occluderCorners_[occluderBegin_[k] .. occluderBegin_[k + 1]). Empty above
-    /// kMaxShaftOccluders faces, where testing every face per link would cost more than its rays.
+    /// The scene's faces that may block (RayCaster::mayBlock), the occluders shaftClear tests: corners
+    /// of occluder k are occluderCorners_[occluderBegin_[k] .. occluderBegin_[k + 1]), its bounding box
+    /// occluderBox_[2 k .. 2 k + 1]. Empty above kMaxShaftOccluders faces, where testing every face per
+    /// link would cost more than its rays.
     std::vector<glm::dvec3> occluderCorners_;
     std::vector<std::uint32_t> occluderBegin_;
+    std::vector<glm::dvec3> occluderBox_;
     double shaftTolerance_ = 0;
     static constexpr std::size_t kMaxShaftOccluders = 256;
     /// Per link while the patch rows are built (shaftClear): 0 not yet tested, 1 clear, 2 maybe blocked.
