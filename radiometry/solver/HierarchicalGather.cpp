@@ -260,7 +260,7 @@ bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
     std::atomic_ref<std::uint8_t> known(linkShaft_[link]);
     const std::uint8_t state = known.load(std::memory_order_relaxed);
     if (state != 0) return state == 1;
-    // An occluder outside the pair's bounding box cannot meet their convex hull: the shaft (~0.4 us
+    // An occluder outside the pair's bounding box cannot meet their convex hull: the shaft (~0.7 us
     // to build) is built only where some occluder's box meets the pair's, and tested against those.
     const PatchPolygon& receiver = tree_.polygon(links_[link].receiver);
     const PatchPolygon& source = tree_.polygon(links_[link].source);
