@@ -356,6 +356,9 @@ struct SourceRule {
     /// Squared distances from the centroid beyond which (distance - sqrt(A))^2 / A exceeds
     /// kNearGaussDistanceSquaredOverArea, kGaussDistanceSquaredOverArea and kFarFieldDistanceSquaredOverArea.
     double nearDistance2 = 0, gaussDistance2 = 0, farDistance2 = 0;
+    /// The largest distance of a corner from the centroid: a point whose tangent plane lies farther
+    /// below the centroid has every corner above it (ruleFormFactor's horizon test, skipped).
+    double radius = 0;
     /// The same nodes in float, as offsets from the source's centroid, in blocks of four for one SSE
     /// operation each (x, y, z, weight; the blocks padded with node 0 at weight 0): ruleFormFactor's
     /// kernel. Offsets keep float's 7 digits relative to the source's size, not the scene's.
@@ -371,6 +374,7 @@ inline SourceRule makeSourceRule(const PatchPolygon& source) {
     rule.gaussDistance2 = std::pow(edge + std::sqrt(kGaussDistanceSquaredOverArea * source.area), 2);
     rule.farDistance2 = std::pow(edge + std::sqrt(kFarFieldDistanceSquaredOverArea * source.area), 2);
     rule.nearDistance2 = std::pow(edge + std::sqrt(kNearGaussDistanceSquaredOverArea * source.area), 2);
+    for (const glm::dvec3& corner : source.corners()) rule.radius = std::max(rule.radius, glm::length(corner - source.centroid));
     forGaussPoints(source, 3, [&](const glm::dvec3& y, double w) {
         rule.gauss[static_cast<std::size_t>(rule.gaussCount)] = y;
         rule.gaussWeight[static_cast<std::size_t>(rule.gaussCount++)] = w;
@@ -443,11 +447,14 @@ inline double ruleFormFactor(const glm::dvec3& x, const glm::dvec3& n, const Pat
 inline double ruleFormFactor(const glm::dvec3& x, const glm::dvec3& n, const PatchPolygon& source, const SourceRule& rule,
                              RuleOrder order) {
     const bool far = order == RuleOrder::Far, near = order == RuleOrder::Near;
-    for (int i = 0; i < source.count; ++i) {
-        const glm::dvec3 r = source.vertices[static_cast<std::size_t>(i)] - x;
-        const double height = glm::dot(n, r);
-        if (height < 0 && height * height > 1e-18 * glm::dot(r, r)) return -1;
-    }
+    // Corners below x's tangent plane: none where the centroid stands higher above it than any corner
+    // lies from the centroid, and the test per corner is skipped.
+    if (!(glm::dot(n, source.centroid - x) > rule.radius))
+        for (int i = 0; i < source.count; ++i) {
+            const glm::dvec3 r = source.vertices[static_cast<std::size_t>(i)] - x;
+            const double height = glm::dot(n, r);
+            if (height < 0 && height * height > 1e-18 * glm::dot(r, r)) return -1;
+        }
     if (glm::dot(source.normal, x - source.centroid) <= 0) return 0;  // behind the emitting side
 #if defined(__SSE2__)
     // Four nodes per SSE operation in float (the rows' weights are floats anyway): within 1e-6 of the
