@@ -521,9 +521,8 @@ Rgb HierarchicalSolver::patchRowIrradiance(std::size_t patch) const {
     return irradiance;
 }
 
-Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) {
-    Rgb irradiance = patchRowIrradiance(patch);
-    patchIrradiance_[patch] = irradiance;
+Rgb HierarchicalSolver::gatheredRadiosity(std::size_t patch) const {
+    Rgb irradiance = patchIrradiance_[patch];
     const std::uint32_t s = patches_[patch].surface;
     if (!patchDirect_.empty()) irradiance += patchDirect_[patch];
     return surfaceExitance_[s] + surfaceReflectance_[s] * irradiance;

@@ -429,12 +429,9 @@ void HierarchicalSolver::mapSolution(bool gathered) {
     if (gathered) patchIrradiance_.resize(patches_.size());
     parallelChunks(patches_.size(), threads_, 256, [&](std::size_t from, std::size_t to, unsigned) {
         for (std::size_t i = from; i < to; ++i) {
-            if (gathered && patches_[i].polygon.count >= 3) {
-                solution_[i] = gatheredRadiosity(i);
-                continue;
-            }
             if (gathered) patchIrradiance_[i] = patchRowIrradiance(i);
-            solution_[i] = radiosity[patchElement_[i]] + patchDirectCorrection(i);
+            solution_[i] = gathered && patches_[i].polygon.count >= 3 ? gatheredRadiosity(i)
+                                                                       : radiosity[patchElement_[i]] + patchDirectCorrection(i);
         }
     });
     patchIrradianceCurrent_ = gathered;

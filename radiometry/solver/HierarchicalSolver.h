@@ -222,9 +222,9 @@ private:
 
     /// The irradiance a patch's row gathers from the tree's radiosity.
     [[nodiscard]] Rgb patchRowIrradiance(std::size_t patch) const;
-    /// E + rho (its row's irradiance + the lights' direct part) for a patch whose row is built; stores
-    /// the row's irradiance in patchIrradiance_ for the next step's gatherLeafRows.
-    [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch);
+    /// E + rho (its row's irradiance, patchIrradiance_, + the lights' direct part) for a patch whose
+    /// row is built.
+    [[nodiscard]] Rgb gatheredRadiosity(std::size_t patch) const;
     void setLeavesToEmission();
     /// H for the elements created since the last call (and each patch's on the first), in parallel.
     void lightNewElements();
