@@ -255,6 +255,31 @@ void HierarchicalSolver::expandSourceScaled(std::uint32_t link, const glm::dvec3
     }
 }
 
+namespace {
+
+/// The bounding box of a and b, widened by `tolerance`.
+std::pair<glm::dvec3, glm::dvec3> boxOf(const PatchPolygon& a, const PatchPolygon& b, double tolerance) {
+    glm::dvec3 low = a.vertices[0], high = low;
+    for (const PatchPolygon* polygon : {&a, &b})
+        for (const glm::dvec3& v : polygon->corners()) {
+            low = glm::min(low, v);
+            high = glm::max(high, v);
+        }
+    return {low - glm::dvec3(tolerance), high + glm::dvec3(tolerance)};
+}
+
+} // namespace
+
+bool HierarchicalSolver::occludersMissBoxOf(const PatchPolygon& a, const PatchPolygon& b) const {
+    if (occluderBegin_.empty()) return false;
+    const auto box = boxOf(a, b, shaftTolerance_);
+    const glm::dvec3 &low = box.first, &high = box.second;
+    for (std::size_t k = 0; k + 1 < occluderBegin_.size(); ++k)
+        if (glm::all(glm::lessThanEqual(occluderBox_[2 * k], high)) && glm::all(glm::lessThanEqual(low, occluderBox_[2 * k + 1])))
+            return false;
+    return true;
+}
+
 bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
     if (occluderBegin_.empty()) return false;
     std::atomic_ref<std::uint8_t> known(linkShaft_[link]);
@@ -264,14 +289,8 @@ bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
     // to build) is built only where some occluder's box meets the pair's, and tested against those.
     const PatchPolygon& receiver = tree_.polygon(links_[link].receiver);
     const PatchPolygon& source = tree_.polygon(links_[link].source);
-    glm::dvec3 low = receiver.vertices[0], high = low;
-    for (const PatchPolygon* polygon : {&receiver, &source})
-        for (const glm::dvec3& v : polygon->corners()) {
-            low = glm::min(low, v);
-            high = glm::max(high, v);
-        }
-    low -= glm::dvec3(shaftTolerance_);
-    high += glm::dvec3(shaftTolerance_);
+    const auto box = boxOf(receiver, source, shaftTolerance_);  // not a structured binding: clang 14 cannot capture one
+    const glm::dvec3 &low = box.first, &high = box.second;
     const auto meetsBox = [&](std::size_t k) {
         return glm::all(glm::lessThanEqual(occluderBox_[2 * k], high)) && glm::all(glm::lessThanEqual(low, occluderBox_[2 * k + 1]));
     };

@@ -162,7 +162,9 @@ std::size_t HierarchicalSolver::makeLink(ElementIndex receiver, ElementIndex sou
     std::size_t rays = 0;
     double visible = 1, share = 1;
     bool hiddenButSeen = false;
-    if (caster_) {
+    // A pair that no occluder's bounding box meets sees all of itself: the rays would all get through
+    // (most of the Cornell box's links between its walls, ceiling and floor).
+    if (caster_ && !occludersMissBoxOf(p, q)) {
         const std::uint64_t seed = linkPairSeed(options_.seed, receiver, source);
         visible = hierarchical::elementVisibility(p, q, *caster_, visibilityRays_, seed, &rays);
         // Every ray blocked stops refinement, yet 4 rays all miss a visible fraction v with chance

@@ -219,6 +219,9 @@ private:
     /// part of the source. Tested once per link, when first asked, while the patch rows are built.
     /// False without occluders to test.
     [[nodiscard]] bool shaftClear(std::uint32_t link) const;
+    /// Whether no occluder's bounding box meets the bounding box of a and b (then no face can block a
+    /// segment between them: their visibility is 1 without rays). False without occluders to test.
+    [[nodiscard]] bool occludersMissBoxOf(const PatchPolygon& a, const PatchPolygon& b) const;
 
     /// The irradiance a patch's row gathers from the tree's radiosity.
     [[nodiscard]] Rgb patchRowIrradiance(std::size_t patch) const;

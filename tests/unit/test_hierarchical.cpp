@@ -517,3 +517,26 @@ TEST_CASE("importance: refinement follows the camera") {
 }
 
 } // TEST_SUITE
+
+TEST_CASE("hierarchical: links between elements no blocker can come between cast no rays") {
+    // The closed furnace is convex: no face can block a segment between two of its points, so no
+    // occluder's box meets any pair's and its links take full visibility without rays; the answer
+    // stays E / (1 - rho) = 2. The Cornell box's blocks stand between some pairs: those cast rays.
+    MeshingOptions meshing;
+    meshing.maxPatchArea = 0.05;
+    const Scene furnace = makeFurnace();
+    auto solver = makeSolver(SolverMethod::Hierarchical, furnace, meshScene(furnace, meshing));
+    for (int step = 0; step < 300 && solver->step().residual > 1e-6; ++step) {}
+    REQUIRE(solver->hierarchy() != nullptr);
+    CHECK(solver->hierarchy()->raysCast() == 0);
+    const ElementTree& tree = solver->hierarchy()->elements();
+    double sum = 0;
+    for (const ElementIndex e : tree.leaves()) sum += tree.area(e) * tree.radiosity()[e].x;
+    CHECK(sum / furnace.totalArea() == doctest::Approx(2.0).epsilon(0.005).scale(0));
+
+    const Scene cornell = makeCornellBox();
+    meshing.maxPatchArea = 0.01;
+    auto blocked = makeSolver(SolverMethod::Hierarchical, cornell, meshScene(cornell, meshing));
+    blocked->step();
+    CHECK(blocked->hierarchy()->raysCast() > 0);
+}
