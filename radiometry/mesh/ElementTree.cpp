@@ -52,8 +52,13 @@ bool polygonContains(const PatchPolygon& polygon, const glm::dvec3& point) {
 
 } // namespace
 
-ElementTree::ElementTree(const Scene& scene) {
-    const detail::ContactPolygons contacts = detail::cutAlongContacts(scene);
+ElementTree::ElementTree(const Scene& scene, const detail::ContactPolygons* cuts) {
+    // Cuts of another scene (a mesh passed with the wrong scene) are not used.
+    if (cuts && cuts->size() != scene.surfaces.size()) cuts = nullptr;
+    for (std::size_t s = 0; cuts && s < scene.surfaces.size(); ++s)
+        if ((*cuts)[s].size() != scene.surfaces[s].faces.size()) cuts = nullptr;
+    const detail::ContactPolygons cutHere = cuts ? detail::ContactPolygons{} : detail::cutAlongContacts(scene);
+    const detail::ContactPolygons& contacts = cuts ? *cuts : cutHere;
     const double weld = detail::weldTolerance(scene);
     surfaceFirstFace_.push_back(0);
     faceFirstRoot_.push_back(0);

@@ -318,9 +318,10 @@ MeshPlan planMeshing(const Scene& scene, const MeshingOptions& options) {
     MeshPlan plan;
     const double tolerance = weldTolerance(scene);
     ContactSegments segments;
-    const ContactPolygons contacts = cutAlongContacts(scene, nullptr, &segments);
+    auto contacts = std::make_shared<const ContactPolygons>(cutAlongContacts(scene, nullptr, &segments));
+    plan.contacts = contacts;
     for (std::size_t s = 0; s < scene.surfaces.size(); ++s) {
-        plan.surfaces.push_back(planSurface(scene, s, options, tolerance, contacts[s], segments[s]));
+        plan.surfaces.push_back(planSurface(scene, s, options, tolerance, (*contacts)[s], segments[s]));
         for (const Piece& piece : plan.surfaces.back().pieces) plan.patchCount += plan.surfaces.back().patchCount(piece);
     }
     return plan;

@@ -20,6 +20,7 @@
 // Cornell box at 13 cm^2. A local refinement would need T-junctions or transition triangles.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -75,6 +76,7 @@ std::uint64_t triangleCoreSegments(std::uint64_t a, std::uint64_t b, std::uint64
 struct MeshPlan {
     std::vector<SurfacePlan> surfaces;
     double patchCount = 0;  ///< double: an absurd request must not overflow before it is refused
+    std::shared_ptr<const ContactPolygons> contacts;  ///< the faces cut along contacts, per surface and face
 };
 
 /// Corners closer than this are one (m): a billionth of the scene's size, so float-rounded copies of

@@ -284,6 +284,7 @@ PatchMesh meshScene(const Scene& scene, const MeshingOptions& options, Progress*
         }
 
     PatchMesh mesh;
+    mesh.contactCuts = plan.contacts;
     mesh.patches.reserve(saturatingCount(plan.patchCount));
     mesh.surfaceFirstPatch.reserve(scene.surfaces.size() + 1);
     for (std::size_t s = 0; s < plan.surfaces.size(); ++s) {

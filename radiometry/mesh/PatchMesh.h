@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <memory>
 #include <span>
 #include <vector>
 
@@ -13,6 +14,7 @@
 #include <glm/vec3.hpp>
 
 #include "radiometry/common/Progress.h"
+#include "radiometry/mesh/ContactCuts.h"
 #include "radiometry/scene/Scene.h"
 
 namespace radiant {
@@ -91,6 +93,10 @@ struct PatchMesh {
     std::vector<Patch> patches;
     /// Patches of surface s are [surfaceFirstPatch[s], surfaceFirstPatch[s + 1]); size surfaces + 1.
     std::vector<std::uint32_t> surfaceFirstPatch;
+    /// The scene's faces cut along contacts (ContactCuts.h), as the patches tile them; the hierarchical
+    /// solver's element tree takes its roots from the same polygons instead of cutting again. Null in
+    /// a mesh not made by meshScene.
+    std::shared_ptr<const detail::ContactPolygons> contactCuts;
 
     [[nodiscard]] std::size_t size() const { return patches.size(); }
     [[nodiscard]] PatchPolygon polygon(std::size_t patch) const;

@@ -26,7 +26,7 @@ std::uint64_t linkPairSeed(std::uint64_t seed, ElementIndex receiver, ElementInd
 
 HierarchicalSolver::HierarchicalSolver(const Scene& scene, const PatchMesh& mesh, const SolverOptions& options,
                                        Progress* progress, HierarchicalRefinement refinement)
-    : options_(options), refinement_(refinement), tree_(scene), threads_(hierarchicalThreadCount()) {
+    : options_(options), refinement_(refinement), tree_(scene, mesh.contactCuts.get()), threads_(hierarchicalThreadCount()) {
     if (!(options.minElementArea >= 0) || !(options.linkEpsilon >= 0) || !(refinement.maxLeafArea >= 0))
         throw RadiantError({scene.name, "hierarchical options"},
                            "minElementArea, linkEpsilon and maxLeafArea must be >= 0 (got " +

@@ -24,6 +24,7 @@
 #include "radiometry/mesh/PatchLocator.h"
 #include "radiometry/mesh/PatchMesh.h"
 #include "radiometry/probe/RadiosityInterpolation.h"
+#include "radiometry/scene/BuiltinScenes.h"
 #include "radiometry/solver/Solver.h"
 #include "render/display/SmoothingGroups.h"
 #include "tests/support/MeshTopology.h"
@@ -449,4 +450,29 @@ TEST_CASE("the floor along a block's foot is meshed finer (besideContactAreaShar
     }
 }
 
+}
+
+TEST_CASE("the element tree built from the mesh's contact cuts has the roots it cuts itself") {
+    // The hierarchical solver hands its tree the cuts the mesher made (PatchMesh::contactCuts)
+    // instead of cutting the scene again; the roots must be the same polygons, and cuts that do not
+    // fit the scene are ignored.
+    const Scene scene = makeCornellBox();
+    const PatchMesh mesh = meshScene(scene, {0.01});
+    REQUIRE(mesh.contactCuts != nullptr);
+    const ElementTree cut(scene), given(scene, mesh.contactCuts.get());
+    const auto sameRoots = [&](const ElementTree& tree) {
+        if (tree.roots().size() != cut.roots().size()) return false;
+        for (std::size_t i = 0; i < cut.roots().size(); ++i) {
+            const PatchPolygon& a = cut.polygon(cut.roots()[i]);
+            const PatchPolygon& b = tree.polygon(tree.roots()[i]);
+            if (a.count != b.count || tree.surface(tree.roots()[i]) != cut.surface(cut.roots()[i])) return false;
+            for (std::size_t c = 0; c < a.count; ++c)
+                if (a.vertices[c] != b.vertices[c]) return false;
+        }
+        return true;
+    };
+    CHECK(cut.roots().size() > scene.faceCount());  // the floor is cut round both blocks
+    CHECK(sameRoots(given));
+    const detail::ContactPolygons wrong(scene.surfaces.size() + 1);
+    CHECK(sameRoots(ElementTree(scene, &wrong)));
 }
