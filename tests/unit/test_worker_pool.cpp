@@ -1,6 +1,7 @@
+// ctest-labels: threads
 // The persistent worker pool under parallelFor and the hierarchical solver's parallelChunks: helpers
-// spin between back-to-back jobs, sleep after a pause, and a helper that joins a job late (after the
-// caller ran every chunk) is neither waited for nor handed a finished job.
+// wait, yielding, between back-to-back jobs and sleep after a pause, and a helper that comes late
+// (after the caller ran every chunk) is neither waited for nor handed a finished job.
 #include <atomic>
 #include <chrono>
 #include <functional>
