@@ -257,8 +257,11 @@ void HierarchicalSolver::expandSourceScaled(std::uint32_t link, const glm::dvec3
 
 namespace {
 
+/// An axis-aligned box: its low and high corners.
+using Box = std::pair<glm::dvec3, glm::dvec3>;
+
 /// The bounding box of a and b, widened by `tolerance`.
-std::pair<glm::dvec3, glm::dvec3> boxOf(const PatchPolygon& a, const PatchPolygon& b, double tolerance) {
+Box boxOf(const PatchPolygon& a, const PatchPolygon& b, double tolerance) {
     glm::dvec3 low = a.vertices[0], high = low;
     for (const PatchPolygon* polygon : {&a, &b})
         for (const glm::dvec3& v : polygon->corners()) {
@@ -268,15 +271,18 @@ std::pair<glm::dvec3, glm::dvec3> boxOf(const PatchPolygon& a, const PatchPolygo
     return {low - glm::dvec3(tolerance), high + glm::dvec3(tolerance)};
 }
 
+/// Whether the box from `low` to `high` meets `box`.
+bool boxesMeet(const glm::dvec3& low, const glm::dvec3& high, const Box& box) {
+    return glm::all(glm::lessThanEqual(low, box.second)) && glm::all(glm::lessThanEqual(box.first, high));
+}
+
 } // namespace
 
 bool HierarchicalSolver::occludersMissBoxOf(const PatchPolygon& a, const PatchPolygon& b) const {
     if (occluderBegin_.empty()) return false;
-    const auto box = boxOf(a, b, shaftTolerance_);
-    const glm::dvec3 &low = box.first, &high = box.second;
+    const Box box = boxOf(a, b, shaftTolerance_);
     for (std::size_t k = 0; k + 1 < occluderBegin_.size(); ++k)
-        if (glm::all(glm::lessThanEqual(occluderBox_[2 * k], high)) && glm::all(glm::lessThanEqual(low, occluderBox_[2 * k + 1])))
-            return false;
+        if (boxesMeet(occluderBox_[2 * k], occluderBox_[2 * k + 1], box)) return false;
     return true;
 }
 
@@ -289,15 +295,11 @@ bool HierarchicalSolver::shaftClear(std::uint32_t link) const {
     // to build) is built only where some occluder's box meets the pair's, and tested against those.
     const PatchPolygon& receiver = tree_.polygon(links_[link].receiver);
     const PatchPolygon& source = tree_.polygon(links_[link].source);
-    const auto box = boxOf(receiver, source, shaftTolerance_);  // not a structured binding: clang 14 cannot capture one
-    const glm::dvec3 &low = box.first, &high = box.second;
-    const auto meetsBox = [&](std::size_t k) {
-        return glm::all(glm::lessThanEqual(occluderBox_[2 * k], high)) && glm::all(glm::lessThanEqual(low, occluderBox_[2 * k + 1]));
-    };
+    const Box box = boxOf(receiver, source, shaftTolerance_);
     bool clear = true;
     std::optional<hierarchical::Shaft> shaft;
     for (std::size_t k = 0; clear && k + 1 < occluderBegin_.size(); ++k) {
-        if (!meetsBox(k)) continue;
+        if (!boxesMeet(occluderBox_[2 * k], occluderBox_[2 * k + 1], box)) continue;
         if (!shaft) shaft.emplace(receiver, source, shaftTolerance_);
         clear = shaft->separates({occluderCorners_.data() + occluderBegin_[k], occluderBegin_[k + 1] - occluderBegin_[k]});
     }
